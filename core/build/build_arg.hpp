@@ -1,0 +1,41 @@
+// The whole pipeline: mesh bytes or a mesh in memory to an Augmented Reeb Graph.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "build/build_options.hpp"
+#include "common/limits.hpp"
+#include "graph/arg_graph.hpp"
+#include "io/read_mesh.hpp"
+#include "mesh/mesh.hpp"
+
+namespace arg {
+
+// Milliseconds spent in each stage of one build.
+struct BuildTimings {
+  double read = 0, clean = 0, normalise = 0, mu = 0, reeb = 0, features = 0, serialise = 0;
+};
+
+struct BuildReport {
+  ReadReport read;
+  std::size_t welded_vertices = 0;
+  std::size_t dropped_degenerate = 0;
+  std::size_t dropped_duplicate = 0;
+  std::size_t flipped_faces = 0;
+  std::size_t boundary_edges = 0;
+  std::size_t nonmanifold_edges = 0;
+  std::size_t components = 0;
+  BuildTimings ms;
+};
+
+// Builds the ARG of a mesh already in memory (cleans a copy first).
+ArgGraph build_arg(const Mesh& mesh, const BuildOptions& options = {},
+                   const StopRequested& stop = {}, BuildReport* report = nullptr);
+
+// Reads `mesh_bytes` (format detected), builds and serialises. `texture` may be empty.
+std::string build_arg_bytes(std::string_view mesh_bytes, std::string_view texture,
+                            const BuildOptions& options = {}, const Limits& limits = {},
+                            const StopRequested& stop = {}, BuildReport* report = nullptr);
+
+}  // namespace arg

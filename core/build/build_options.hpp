@@ -1,0 +1,30 @@
+// Options of an ARG build (resolution, kind of mu, sampling) and their short text form.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace arg {
+
+enum class MuKind : std::uint8_t { Geodesic = 0, Height = 1, Centroid = 2 };
+
+struct BuildOptions {
+  int levels = 5;         // n: the finest level has 2^n intervals of mu; levels 0..n are kept
+  MuKind mu = MuKind::Geodesic;
+  int base_points = 128;  // K, base points of the geodesic integral
+  int threads = 1;        // worker threads for mu; never changes the result
+};
+
+inline constexpr int kMaxLevels = 7;
+
+// Parses "levels=5 mu=geodesic base_points=128 threads=2" (any order, any subset; empty gives
+// the defaults). Throws InputError naming the bad key or value.
+BuildOptions parse_build_options(std::string_view text);
+
+// The canonical text form of the options that change the result (threads is left out).
+std::string format_build_options(const BuildOptions& options);
+
+const char* mu_kind_name(MuKind kind);
+
+}  // namespace arg

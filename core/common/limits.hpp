@@ -1,0 +1,24 @@
+// Caps on untrusted input and the cancellation hook that long loops poll.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+
+namespace arg {
+
+// Caps applied while reading untrusted input; exceeding one throws LimitError.
+struct Limits {
+  std::size_t max_input_bytes = std::size_t(512) << 20;
+  std::size_t max_vertices = 4'000'000;
+  std::size_t max_triangles = 8'000'000;
+  std::size_t max_image_pixels = std::size_t(64) << 20;
+};
+
+// Polled from long loops; returns true when the work should stop (the core then throws
+// Interrupted). Empty means never stop.
+using StopRequested = std::function<bool()>;
+
+// Throws Interrupted when stop says so; cheap enough to call every few thousand iterations.
+void check_interrupt(const StopRequested& stop);
+
+}  // namespace arg

@@ -1,0 +1,33 @@
+// The versioned binary form of an ARG and its strict reader; also the lossless text form.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "graph/arg_graph.hpp"
+
+namespace arg {
+
+inline constexpr std::uint16_t kFormatVersion = 1;
+
+// Little-endian bytes: header (magic, versions, options, counts, summary, global descriptor),
+// then node records, children and adjacency. Deterministic: equal graphs give equal bytes.
+std::string serialize_arg(const ArgGraph& graph);
+
+// Strict reader: checks sizes, counts, ranges, ordering, links both ways, finiteness and the
+// digest; throws InputError saying what is wrong and at which offset.
+ArgGraph deserialize_arg(std::string_view bytes);
+
+// Only the checks, no copy.
+void validate_arg_bytes(std::string_view bytes);
+
+// 64-bit content digest stored in the header (used for equality, hashing and canonical order).
+std::uint64_t arg_digest(std::string_view bytes);
+
+// Text form: "arg1:" followed by standard base64 of the binary form.
+std::string arg_to_text(std::string_view bytes);
+// Accepts exactly that form (no spaces, padding required) and validates the decoded bytes.
+std::string arg_from_text(std::string_view text);
+
+}  // namespace arg

@@ -1,0 +1,41 @@
+// Reading a mesh from bytes in memory, whatever its format (detected from the content).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+#include "common/limits.hpp"
+#include "mesh/mesh.hpp"
+
+namespace arg {
+
+enum class MeshFormat { Off, Obj, Ply, Stl, Glb, Unknown };
+
+// "OFF", "OBJ", "PLY", "STL", "GLB" or "unknown".
+const char* format_name(MeshFormat format);
+
+// Guesses the format from the first bytes (magic numbers, keywords); never throws.
+MeshFormat detect_mesh_format(std::string_view bytes);
+
+struct ReadOptions {
+  Limits limits;
+  // Optional texture image (PNG, JPEG, TGA, ...) for formats that keep it outside the mesh (OBJ).
+  std::string_view texture;
+  StopRequested stop;
+};
+
+// What the reader saw and did, for `argtool info` and error reports.
+struct ReadReport {
+  MeshFormat format = MeshFormat::Unknown;
+  std::size_t vertices_read = 0;
+  std::size_t faces_read = 0;            // polygons as stored in the file
+  std::size_t polygons_triangulated = 0; // faces with more than three corners
+  std::string colour_source = "none";    // "texture", "vertex", "face" or "none"
+};
+
+// Parses `bytes` into a triangle mesh with per-triangle colour when the input has any.
+// Throws InputError (naming format and line/offset) or LimitError.
+Mesh read_mesh(std::string_view bytes, const ReadOptions& options = {}, ReadReport* report = nullptr);
+
+}  // namespace arg

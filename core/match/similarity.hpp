@@ -1,0 +1,39 @@
+// Comparing two ARGs: the matched node pairs, SIM and part matching.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "graph/arg_graph.hpp"
+#include "match/weights.hpp"
+
+namespace arg {
+
+// One matched pair; a node matched to a group appears in several rows with the same group.
+struct MatchPair {
+  int level = 0;
+  int a_node = 0;  // index within its level in the first argument
+  int b_node = 0;  // index within its level in the second argument
+  int group = 0;   // rows with the same group form one match
+  double loss = 0;
+  double sim = 0;  // contribution to the numerator of SIM (shared by the group's rows)
+};
+
+// SIM(A, B) in [0, 1]: 0 for identical graphs, exactly symmetric. Fills `matches` if given.
+double arg_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& weights = {},
+                      std::vector<MatchPair>* matches = nullptr);
+
+struct PartMatch {
+  int level = 0;
+  int node = 0;      // index within its level in the candidate
+  double score = 0;  // SIM of the sub-graphs, 0 = same part
+};
+
+// Ranks the candidate's nodes at `level` (and the neighbouring levels) by how well their
+// sub-graphs match the sub-graph of `query` rooted at `node` (index within `level`); best first.
+// Throws InputError when level or node is out of range.
+std::vector<PartMatch> part_match(const ArgGraph& query, int level, int node,
+                                  const ArgGraph& candidate, const Weights& weights = {},
+                                  double threshold = 0.5);
+
+}  // namespace arg

@@ -1,0 +1,33 @@
+// Weights of the loss (which nodes match) and of sim (how much a match is worth), with presets.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace arg {
+
+struct Weights {
+  // loss(m, n): alpha_l|a-a'| + beta_l|l-l'| + gamma_l|r-r'| + delta_l|theta-theta'| + eps_l|phi-phi'|
+  float alpha_l = 0.3f, beta_l = 0.15f, gamma_l = 0.15f, delta_l = 0.2f, eps_l = 0.2f;
+  // sim(m, n): alpha_s min(a) + beta_s min(l) + lambda_1 min(v) + lambda_2 min(cords)
+  //            + lambda_3 min(curvature) + lambda_4 min(colour)
+  float alpha_s = 0.65f, beta_s = 0.35f;
+  float lambda_1 = 0, lambda_2 = 0, lambda_3 = 0, lambda_4 = 0;
+  bool l2 = false;        // squared differences in the loss instead of absolute ones
+  bool tung_rule = true;  // Tung and Schmitt's extra consistency rule (off for Hilaga's MRG)
+};
+
+// "arg", "mrg", "shape" or "colour"; throws InputError for another name.
+Weights weights_preset(std::string_view name);
+
+// A preset name, or "key=value" pairs separated by spaces or commas, optionally after a preset
+// ("shape lambda_4=0.1"). Keys: alpha_l beta_l gamma_l delta_l eps_l alpha_s beta_s lambda_1..4
+// norm=l1|l2 tung=on|off. Values finite and >= 0, at least one sim weight positive.
+Weights parse_weights(std::string_view text);
+
+// Canonical text form; parse_weights(format_weights(w)) == w.
+std::string format_weights(const Weights& w);
+
+bool operator==(const Weights& a, const Weights& b);
+
+}  // namespace arg
