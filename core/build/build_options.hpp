@@ -10,7 +10,7 @@ namespace arg {
 enum class MuKind : std::uint8_t { Geodesic = 0, Height = 1, Centroid = 2 };
 
 struct BuildOptions {
-  int levels = 5;         // n: the finest level has 2^n intervals of mu; levels 0..n are kept
+  int levels = 5;  // n: the finest level has 2^n intervals of mu; levels 0..n are kept
   MuKind mu = MuKind::Geodesic;
   int base_points = 128;  // K, base points of the geodesic integral
   int threads = 1;        // worker threads for mu; never changes the result

@@ -23,7 +23,7 @@ struct ArgNode {
   std::int32_t parent = -1;    // node index at level - 1; -1 at level 0
   std::uint32_t child_begin = 0, child_count = 0;  // range in ArgGraph::children
   std::uint32_t adj_begin = 0, adj_count = 0;      // range in ArgGraph::adjacency
-  float a = 0;       // relative area, a level sums to 1/(levels+1)
+  float a = 0;                                     // relative area, a level sums to 1/(levels+1)
   float l = 0;       // relative mu length, a level sums to 1/(levels+1)
   float r = 0;       // barycentre in spherical coordinates in the aligned, scaled frame
   float theta = 0;   // arctan(y/x) in [-pi/2, pi/2]
@@ -31,7 +31,7 @@ struct ArgNode {
   float v = 0;       // relative volume, a level sums to about 1/(levels+1) on closed meshes
   float mu_min = 0;  // mu range actually covered by the node's region
   float mu_max = 0;
-  std::array<float, kCordBins> cords{};          // area-weighted, sums to a
+  std::array<float, kCordBins> cords{};           // area-weighted, sums to a
   std::array<float, kCurvatureBins> curv_mean{};  // area-weighted, sums to a
   std::array<float, kCurvatureBins> curv_gauss{};
   std::array<float, 3 * kColourBins> colour{};  // R, G, B histograms, each sums to a (or 0)
@@ -39,15 +39,15 @@ struct ArgNode {
 
 // Whole-model facts kept in the header.
 struct ArgSummary {
-  std::uint32_t triangles = 0;   // after cleaning and refinement
+  std::uint32_t triangles = 0;  // after cleaning and refinement
   std::uint32_t vertices = 0;
   std::uint16_t components = 0;  // connected components of the cleaned mesh
   std::uint16_t genus = 0;       // independent loops of the finest Reeb graph
   std::uint16_t has_colour = 0;
-  std::uint16_t flags = 0;       // bit 0: mesh was open (had boundary edges)
-  float area = 0;                // surface area before scale normalisation
-  float volume = 0;              // enclosed volume before scale normalisation
-  float scale = 0;               // the factor applied to reach unit RMS radius
+  std::uint16_t flags = 0;  // bit 0: mesh was open (had boundary edges)
+  float area = 0;           // surface area before scale normalisation
+  float volume = 0;         // enclosed volume before scale normalisation
+  float scale = 0;          // the factor applied to reach unit RMS radius
 };
 
 struct ArgGraph {

@@ -7,7 +7,8 @@
 namespace arg {
 
 struct Weights {
-  // loss(m, n): alpha_l|a-a'| + beta_l|l-l'| + gamma_l|r-r'| + delta_l|theta-theta'| + eps_l|phi-phi'|
+  // loss(m, n): alpha_l|a-a'| + beta_l|l-l'| + gamma_l|r-r'| + delta_l|theta-theta'| +
+  // eps_l|phi-phi'|
   float alpha_l = 0.3f, beta_l = 0.15f, gamma_l = 0.15f, delta_l = 0.2f, eps_l = 0.2f;
   // sim(m, n): alpha_s min(a) + beta_s min(l) + lambda_1 min(v) + lambda_2 min(cords)
   //            + lambda_3 min(curvature) + lambda_4 min(colour)

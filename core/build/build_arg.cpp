@@ -1,0 +1,162 @@
+// The ARG pipeline: clean, normalise, mu, slice, Reeb levels, attributes, assemble.
+#include "build/build_arg.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include "common/errors.hpp"
+#include "features/curvature.hpp"
+#include "features/node_attributes.hpp"
+#include "features/shape_distributions.hpp"
+#include "graph/serialize.hpp"
+#include "mesh/clean_mesh.hpp"
+#include "mesh/connected_components.hpp"
+#include "mesh/mesh_edges.hpp"
+#include "mesh/normalize_pose.hpp"
+#include "mu/mu_function.hpp"
+#include "reeb/reeb_levels.hpp"
+#include "reeb/slice_intervals.hpp"
+
+namespace arg {
+
+namespace {
+
+class Stopwatch {
+ public:
+  double lap() {
+    auto now = std::chrono::steady_clock::now();
+    double ms = std::chrono::duration<double, std::milli>(now - last_).count();
+    last_ = now;
+    return ms;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+// Global node numbering by level, CSR children and adjacency.
+void assemble(ArgGraph& g, std::vector<std::vector<ArgNode>>& per_level, const ReebGraph& reeb) {
+  const int levels = int(per_level.size()) - 1;
+  g.level_begin.assign(std::size_t(levels) + 2, 0);
+  for (int r = 0; r <= levels; ++r)
+    g.level_begin[std::size_t(r) + 1] =
+        g.level_begin[std::size_t(r)] + std::uint32_t(per_level[std::size_t(r)].size());
+  g.nodes.clear();
+  for (int r = 0; r <= levels; ++r)
+    for (ArgNode n : per_level[std::size_t(r)]) {
+      if (r > 0) n.parent += std::int32_t(g.level_begin[std::size_t(r) - 1]);
+      g.nodes.push_back(n);
+    }
+  // Children: each node's children in the order of the finer level.
+  std::vector<std::vector<std::uint32_t>> kids(g.nodes.size());
+  for (std::size_t i = g.level_begin[1]; i < g.nodes.size(); ++i)
+    kids[std::size_t(g.nodes[i].parent)].push_back(std::uint32_t(i));
+  std::vector<std::vector<std::uint32_t>> adj(g.nodes.size());
+  for (int r = 0; r <= levels; ++r)
+    for (auto [a, b] : reeb.levels[std::size_t(r)].edges) {
+      std::uint32_t ga = g.level_begin[std::size_t(r)] + std::uint32_t(a),
+                    gb = g.level_begin[std::size_t(r)] + std::uint32_t(b);
+      adj[ga].push_back(gb), adj[gb].push_back(ga);
+    }
+  g.children.clear(), g.adjacency.clear();
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    g.nodes[i].child_begin = std::uint32_t(g.children.size());
+    g.nodes[i].child_count = std::uint32_t(kids[i].size());
+    g.children.insert(g.children.end(), kids[i].begin(), kids[i].end());
+    std::sort(adj[i].begin(), adj[i].end());
+    g.nodes[i].adj_begin = std::uint32_t(g.adjacency.size());
+    g.nodes[i].adj_count = std::uint32_t(adj[i].size());
+    g.adjacency.insert(g.adjacency.end(), adj[i].begin(), adj[i].end());
+  }
+}
+
+}  // namespace
+
+ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopRequested& stop,
+                   BuildReport* report) {
+  BuildReport local;
+  BuildReport& rep = report ? *report : local;
+  if (options.levels < 1 || options.levels > kMaxLevels)
+    throw InputError("build options: levels must be in [1, " + std::to_string(kMaxLevels) + "]");
+  Stopwatch clock;
+
+  CleanReport clean;
+  Mesh mesh = clean_mesh(input, &clean, stop);
+  rep.welded_vertices = clean.welded_vertices;
+  rep.dropped_degenerate = clean.dropped_degenerate;
+  rep.dropped_duplicate = clean.dropped_duplicate;
+  rep.flipped_faces = clean.flipped_faces;
+  rep.boundary_edges = clean.boundary_edges;
+  rep.nonmanifold_edges = clean.nonmanifold_edges;
+  rep.ms.clean = clock.lap();
+
+  Pose pose = surface_pose(mesh);
+  if (!(pose.area > 0)) throw InputError("mesh has zero surface area");
+  mesh = apply_pose(mesh, pose);
+  MeshEdges edges = mesh_edges(mesh.F);
+  std::vector<int> component;
+  rep.components = std::size_t(vertex_components(mesh, component));
+  rep.ms.normalise = clock.lap();
+
+  std::vector<double> mu = normalised_mu(mesh, edges, options, stop);
+  rep.ms.mu = clock.lap();
+
+  SlicedSurface sliced = slice_intervals(mesh, mu, 1 << options.levels, stop);
+  ReebGraph reeb = reeb_levels(sliced, edges, options.levels, stop);
+  rep.ms.reeb = clock.lap();
+
+  TriangleCurvature curvature = triangle_curvature(mesh, edges);
+  double volume = 0;
+  std::vector<std::vector<ArgNode>> per_level =
+      node_attributes(mesh, sliced, reeb, curvature, &volume);
+  check_interrupt(stop);
+
+  ArgGraph g;
+  g.options = options;
+  g.options.threads = 1;
+  g.builder_version = current_builder_version();
+  assemble(g, per_level, reeb);
+  ArgSummary& s = g.summary;
+  s.triangles = std::uint32_t(mesh.F.rows());
+  s.vertices = std::uint32_t(mesh.V.rows());
+  s.components = std::uint16_t(std::min<std::size_t>(rep.components, 65535));
+  s.genus = std::uint16_t(std::clamp(reeb.loops, 0, 65535));
+  s.has_colour = mesh.has_colour() ? 1 : 0;
+  s.flags = clean.boundary_edges > 0 ? 1 : 0;
+  s.area = float(pose.area);
+  s.scale = float(pose.scale);
+  s.volume = float(volume / (pose.scale * pose.scale * pose.scale));
+  GraphCounts counts;
+  for (int r = 0; r <= options.levels; ++r)
+    counts.nodes_per_level[std::size_t(r)] = int(per_level[std::size_t(r)].size());
+  counts.loops = reeb.loops;
+  counts.components = int(rep.components);
+  g.global = global_descriptor(mesh, pose, counts, volume);
+  rep.ms.features = clock.lap();
+  return g;
+}
+
+std::string build_arg_bytes(std::string_view mesh_bytes, std::string_view texture,
+                            const BuildOptions& options, const Limits& limits,
+                            const StopRequested& stop, BuildReport* report) {
+  BuildReport local;
+  BuildReport& rep = report ? *report : local;
+  if (mesh_bytes.size() > limits.max_input_bytes)
+    throw LimitError("mesh of " + std::to_string(mesh_bytes.size()) + " bytes exceeds the cap of " +
+                     std::to_string(limits.max_input_bytes) + " bytes");
+  Stopwatch clock;
+  ReadOptions read;
+  read.limits = limits;
+  read.texture = texture;
+  read.stop = stop;
+  Mesh mesh = read_mesh(mesh_bytes, read, &rep.read);
+  double read_ms = clock.lap();
+  ArgGraph g = build_arg(mesh, options, stop, &rep);
+  rep.ms.read = read_ms;
+  clock.lap();
+  std::string bytes = serialize_arg(g);
+  rep.ms.serialise = clock.lap();
+  return bytes;
+}
+
+}  // namespace arg

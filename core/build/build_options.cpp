@@ -1,0 +1,53 @@
+// Parsing and printing the options of an ARG build.
+#include "build/build_options.hpp"
+
+#include "common/errors.hpp"
+#include "common/key_values.hpp"
+
+namespace arg {
+
+const char* mu_kind_name(MuKind kind) {
+  switch (kind) {
+    case MuKind::Geodesic:
+      return "geodesic";
+    case MuKind::Height:
+      return "height";
+    case MuKind::Centroid:
+      return "centroid";
+  }
+  return "geodesic";
+}
+
+BuildOptions parse_build_options(std::string_view text) {
+  static const char* what = "build options";
+  BuildOptions options;
+  for (const auto& [key, value] : split_key_values(text, what)) {
+    if (key == "levels") {
+      options.levels = int(parse_integer(value, key, what, 1, kMaxLevels));
+    } else if (key == "mu") {
+      if (value == "geodesic")
+        options.mu = MuKind::Geodesic;
+      else if (value == "height")
+        options.mu = MuKind::Height;
+      else if (value == "centroid")
+        options.mu = MuKind::Centroid;
+      else
+        throw InputError("build options: mu=" + value + " (expected geodesic, height or centroid)");
+    } else if (key == "base_points") {
+      options.base_points = int(parse_integer(value, key, what, 8, 4096));
+    } else if (key == "threads") {
+      options.threads = int(parse_integer(value, key, what, 1, 256));
+    } else {
+      throw InputError("build options: unknown key \"" + key +
+                       "\" (expected levels, mu, base_points or threads)");
+    }
+  }
+  return options;
+}
+
+std::string format_build_options(const BuildOptions& options) {
+  return "levels=" + std::to_string(options.levels) + " mu=" + mu_kind_name(options.mu) +
+         " base_points=" + std::to_string(options.base_points);
+}
+
+}  // namespace arg

@@ -1,0 +1,307 @@
+// Binary and text forms of an ARG: deterministic writer, strict validating reader.
+#include "graph/serialize.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "common/base64.hpp"
+#include "common/byte_io.hpp"
+#include "common/errors.hpp"
+
+namespace arg {
+
+namespace {
+
+constexpr char kMagic[4] = {'A', 'R', 'G', 'R'};
+constexpr std::size_t kLevelSlots = kMaxLevels + 2;
+constexpr std::size_t kHeaderSize =
+    4 + 2 + 2 + 4 + 4 + 8 + 4 + 4 + 4 + 4 + 28 + 4 * kLevelSlots + 4 * kGlobalDims;
+constexpr std::size_t kDigestAt = 16, kDigestEnd = 24;  // the digest covers every other byte
+constexpr std::size_t kNodeSize =
+    2 + 2 + 4 * 5 + 4 * 8 + 4 * (kCordBins + 2 * kCurvatureBins + 3 * kColourBins);
+constexpr std::uint32_t kMaxNodes = 1u << 20;
+constexpr char kTextTag[] = "arg1:";
+
+// Calls f on every field of a node, in the order of the binary form.
+template <class Node, class F>
+void for_each_field(Node& n, F&& f) {
+  f(n.level), f(n.interval), f(n.parent), f(n.child_begin), f(n.child_count), f(n.adj_begin),
+      f(n.adj_count);
+  f(n.a), f(n.l), f(n.r), f(n.theta), f(n.phi), f(n.v), f(n.mu_min), f(n.mu_max);
+  for (auto& x : n.cords) f(x);
+  for (auto& x : n.curv_mean) f(x);
+  for (auto& x : n.curv_gauss) f(x);
+  for (auto& x : n.colour) f(x);
+}
+
+std::uint64_t fnv1a(std::string_view bytes, std::uint64_t h = 1469598103934665603ull) {
+  for (char c : bytes) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+// FNV-1a over every byte but the digest's own eight.
+std::uint64_t content_digest(std::string_view bytes) {
+  return fnv1a(bytes.substr(kDigestEnd), fnv1a(bytes.substr(0, kDigestAt)));
+}
+
+struct Header {
+  std::uint16_t version = 0, header_size = 0;
+  std::uint32_t total_size = 0, builder_version = 0;
+  std::uint64_t digest = 0;
+  std::uint8_t levels = 0, mu_kind = 0;
+  std::uint16_t base_points = 0;
+  std::uint32_t node_count = 0, child_count = 0, adjacency_count = 0;
+};
+
+[[noreturn]] void fail(const std::string& message) {
+  throw InputError("ARG: " + message);
+}
+
+bool finite(float x) {
+  return std::isfinite(x);
+}
+
+// Reads and checks the header; fills graph's scalar parts.
+Header read_header(ByteReader& in, std::string_view bytes, ArgGraph& g) {
+  Header h;
+  std::string_view magic = in.get_bytes(4);
+  if (magic != std::string_view(kMagic, 4)) in.fail("bad magic (not an ARG value)");
+  h.version = in.get<std::uint16_t>();
+  if (h.version != kFormatVersion)
+    in.fail("unsupported format version " + std::to_string(h.version) + " (this build reads " +
+            std::to_string(kFormatVersion) + ")");
+  h.header_size = in.get<std::uint16_t>();
+  if (h.header_size != kHeaderSize) in.fail("header size " + std::to_string(h.header_size));
+  h.total_size = in.get<std::uint32_t>();
+  if (h.total_size != bytes.size())
+    in.fail("declared size " + std::to_string(h.total_size) + " but value has " +
+            std::to_string(bytes.size()) + " bytes");
+  h.builder_version = in.get<std::uint32_t>();
+  h.digest = in.get<std::uint64_t>();
+  if (h.digest != content_digest(bytes)) in.fail("digest mismatch (corrupted value)");
+  h.levels = in.get<std::uint8_t>();
+  h.mu_kind = in.get<std::uint8_t>();
+  h.base_points = in.get<std::uint16_t>();
+  if (h.levels < 1 || h.levels > kMaxLevels) in.fail("levels " + std::to_string(h.levels));
+  if (h.mu_kind > 2) in.fail("mu kind " + std::to_string(h.mu_kind));
+  if (h.base_points < 8 || h.base_points > 4096)
+    in.fail("base points " + std::to_string(h.base_points));
+  h.node_count = in.get<std::uint32_t>();
+  h.child_count = in.get<std::uint32_t>();
+  h.adjacency_count = in.get<std::uint32_t>();
+  if (h.node_count < 1 || h.node_count > kMaxNodes)
+    in.fail("node count " + std::to_string(h.node_count));
+  std::uint64_t expected = kHeaderSize + std::uint64_t(h.node_count) * kNodeSize +
+                           4 * (std::uint64_t(h.child_count) + h.adjacency_count);
+  if (expected != bytes.size())
+    in.fail("counts (" + std::to_string(h.node_count) + " nodes, " + std::to_string(h.child_count) +
+            " links, " + std::to_string(h.adjacency_count) + " adjacencies) need " +
+            std::to_string(expected) + " bytes, value has " + std::to_string(bytes.size()));
+
+  g.options.levels = h.levels;
+  g.options.mu = MuKind(h.mu_kind);
+  g.options.base_points = h.base_points;
+  g.builder_version = h.builder_version;
+  ArgSummary& s = g.summary;
+  s.triangles = in.get<std::uint32_t>();
+  s.vertices = in.get<std::uint32_t>();
+  s.components = in.get<std::uint16_t>();
+  s.genus = in.get<std::uint16_t>();
+  s.has_colour = in.get<std::uint16_t>();
+  s.flags = in.get<std::uint16_t>();
+  s.area = in.get<float>();
+  s.volume = in.get<float>();
+  s.scale = in.get<float>();
+  if (s.has_colour > 1) in.fail("colour flag " + std::to_string(s.has_colour));
+  if (!finite(s.area) || !finite(s.volume) || !finite(s.scale) || s.area < 0 || s.scale < 0)
+    in.fail("summary holds a non-finite or negative measure");
+  g.level_begin.assign(kLevelSlots, 0);
+  for (auto& x : g.level_begin) x = in.get<std::uint32_t>();
+  for (auto& x : g.global) {
+    x = in.get<float>();
+    if (!finite(x)) in.fail("global descriptor holds a non-finite value");
+  }
+  return h;
+}
+
+void check_node_values(const ArgNode& n, std::size_t i) {
+  auto bad = [&](const char* what) {
+    fail("node " + std::to_string(i) + ": " + what + " out of range or not finite");
+  };
+  auto unit = [](float x) { return std::isfinite(x) && x >= 0.0f && x <= 1.0001f; };
+  if (!unit(n.a)) bad("area");
+  if (!unit(n.l)) bad("length");
+  if (!unit(n.v)) bad("volume");
+  if (!std::isfinite(n.r) || n.r < 0 || n.r > 1e6f) bad("r");
+  if (!std::isfinite(n.theta) || std::fabs(n.theta) > 1.5708f) bad("theta");
+  if (!std::isfinite(n.phi) || n.phi < 0 || n.phi > 3.1416f) bad("phi");
+  if (!unit(n.mu_min) || !unit(n.mu_max) || n.mu_min > n.mu_max) bad("mu range");
+  auto hist = [&](const float* x, std::size_t count, const char* what) {
+    for (std::size_t k = 0; k < count; ++k)
+      if (!unit(x[k])) bad(what);
+  };
+  hist(n.cords.data(), n.cords.size(), "cords histogram");
+  hist(n.curv_mean.data(), n.curv_mean.size(), "mean curvature histogram");
+  hist(n.curv_gauss.data(), n.curv_gauss.size(), "Gaussian curvature histogram");
+  hist(n.colour.data(), n.colour.size(), "colour histogram");
+}
+
+// Structural checks: levels, ordering, parent/child links both ways, adjacency symmetry.
+void check_structure(const ArgGraph& g) {
+  const std::size_t n = g.nodes.size();
+  const int levels = g.levels();
+  if (g.level_begin[0] != 0) fail("level table does not start at node 0");
+  for (std::size_t r = 1; r < kLevelSlots; ++r) {
+    std::uint32_t want = r <= std::size_t(levels) + 1 ? g.level_begin[r] : n;
+    if (g.level_begin[r] < g.level_begin[r - 1] || g.level_begin[r] > n || g.level_begin[r] != want)
+      fail("level table entry " + std::to_string(r) + " is inconsistent");
+    if (r <= std::size_t(levels) + 1 && g.level_begin[r] == g.level_begin[r - 1])
+      fail("level " + std::to_string(r - 1) + " has no node");
+  }
+  if (g.level_begin[levels + 1] != n) fail("level table does not cover every node");
+
+  std::uint32_t child_cursor = 0, adj_cursor = 0;
+  std::vector<std::uint8_t> seen_as_child(n, 0);
+  for (int r = 0; r <= levels; ++r) {
+    for (std::uint32_t i = g.level_begin[r]; i < g.level_begin[r + 1]; ++i) {
+      const ArgNode& node = g.nodes[i];
+      const std::string at = "node " + std::to_string(i);
+      if (node.level != r)
+        fail(at + ": level " + std::to_string(node.level) + " in level " + std::to_string(r) +
+             "'s range");
+      if (node.interval >= (1u << r)) fail(at + ": interval out of range");
+      if (i > g.level_begin[r] && g.nodes[i - 1].interval > node.interval)
+        fail(at + ": nodes not sorted by interval");
+      if (r == 0) {
+        if (node.parent != -1) fail(at + ": level-0 node has a parent");
+      } else {
+        if (node.parent < std::int32_t(g.level_begin[r - 1]) ||
+            node.parent >= std::int32_t(g.level_begin[r]))
+          fail(at + ": parent out of range");
+        if (g.nodes[node.parent].interval != node.interval / 2)
+          fail(at + ": parent lies in another mu interval");
+      }
+      if (node.child_begin != child_cursor || node.child_count > g.children.size() - child_cursor)
+        fail(at + ": children range out of order or out of bounds");
+      for (std::uint32_t k = 0; k < node.child_count; ++k) {
+        std::uint32_t c = g.children[child_cursor + k];
+        if (c >= n || g.nodes[c].parent != std::int32_t(i) || seen_as_child[c])
+          fail(at + ": child " + std::to_string(c) + " does not point back or is listed twice");
+        seen_as_child[c] = 1;
+      }
+      child_cursor += node.child_count;
+      if (node.adj_begin != adj_cursor || node.adj_count > g.adjacency.size() - adj_cursor)
+        fail(at + ": adjacency range out of order or out of bounds");
+      for (std::uint32_t k = 0; k < node.adj_count; ++k) {
+        std::uint32_t j = g.adjacency[adj_cursor + k];
+        if (j < g.level_begin[r] || j >= g.level_begin[r + 1])
+          fail(at + ": neighbour " + std::to_string(j) + " is not on the same level");
+        int gap = int(g.nodes[j].interval) - int(node.interval);
+        if (gap != 1 && gap != -1) fail(at + ": neighbour not in an adjacent interval");
+        if (k > 0 && g.adjacency[adj_cursor + k - 1] >= j)
+          fail(at + ": neighbours not sorted or repeated");
+        const ArgNode& other = g.nodes[j];
+        bool back = false;
+        for (std::uint32_t q = 0; q < other.adj_count && !back; ++q)
+          back = g.adjacency[other.adj_begin + q] == i;
+        if (!back) fail(at + ": adjacency to " + std::to_string(j) + " is not symmetric");
+      }
+      adj_cursor += node.adj_count;
+    }
+  }
+  if (child_cursor != g.children.size()) fail("unused entries in the children section");
+  if (adj_cursor != g.adjacency.size()) fail("unused entries in the adjacency section");
+  for (std::uint32_t i = g.level_begin[1]; i < n; ++i)
+    if (!seen_as_child[i]) fail("node " + std::to_string(i) + " is not a child of its parent");
+}
+
+}  // namespace
+
+std::string serialize_arg(const ArgGraph& g) {
+  ByteWriter out;
+  out.put_bytes(std::string_view(kMagic, 4));
+  out.put(kFormatVersion);
+  out.put(std::uint16_t(kHeaderSize));
+  out.put(std::uint32_t(0));  // total size, patched below
+  out.put(g.builder_version);
+  out.put(std::uint64_t(0));  // digest, patched below
+  out.put(std::uint8_t(g.options.levels));
+  out.put(std::uint8_t(g.options.mu));
+  out.put(std::uint16_t(g.options.base_points));
+  out.put(std::uint32_t(g.nodes.size()));
+  out.put(std::uint32_t(g.children.size()));
+  out.put(std::uint32_t(g.adjacency.size()));
+  const ArgSummary& s = g.summary;
+  out.put(s.triangles), out.put(s.vertices), out.put(s.components), out.put(s.genus);
+  out.put(s.has_colour), out.put(s.flags), out.put(s.area), out.put(s.volume), out.put(s.scale);
+  for (std::size_t r = 0; r < kLevelSlots; ++r)
+    out.put(r < g.level_begin.size() ? g.level_begin[r] : std::uint32_t(g.nodes.size()));
+  for (float x : g.global) out.put(x);
+  for (const ArgNode& node : g.nodes) for_each_field(node, [&](auto x) { out.put(x); });
+  for (auto c : g.children) out.put(c);
+  for (auto j : g.adjacency) out.put(j);
+
+  std::string& bytes = out.bytes();
+  ByteWriter size;
+  size.put(std::uint32_t(bytes.size()));
+  bytes.replace(8, 4, size.bytes());
+  ByteWriter digest;
+  digest.put(content_digest(bytes));
+  bytes.replace(kDigestAt, 8, digest.bytes());
+  return std::move(bytes);
+}
+
+ArgGraph deserialize_arg(std::string_view bytes) {
+  if (bytes.size() < kHeaderSize)
+    fail("value of " + std::to_string(bytes.size()) + " bytes is shorter than the header (" +
+         std::to_string(kHeaderSize) + ")");
+  ArgGraph g;
+  ByteReader in(bytes, "ARG");
+  Header h = read_header(in, bytes, g);
+  g.nodes.resize(h.node_count);
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    for_each_field(g.nodes[i],
+                   [&](auto& x) { x = in.get<std::remove_reference_t<decltype(x)>>(); });
+    check_node_values(g.nodes[i], i);
+  }
+  g.children.resize(h.child_count);
+  for (auto& c : g.children) c = in.get<std::uint32_t>();
+  g.adjacency.resize(h.adjacency_count);
+  for (auto& j : g.adjacency) j = in.get<std::uint32_t>();
+  check_structure(g);
+  g.level_begin.resize(std::size_t(g.levels()) + 2);
+  return g;
+}
+
+void validate_arg_bytes(std::string_view bytes) {
+  (void)deserialize_arg(bytes);
+}
+
+std::uint64_t arg_digest(std::string_view bytes) {
+  if (bytes.size() < kDigestEnd) fail("value too short for a digest");
+  ByteReader in(bytes.substr(kDigestAt, 8), "ARG");
+  return in.get<std::uint64_t>();
+}
+
+std::string arg_to_text(std::string_view bytes) {
+  return kTextTag + base64_encode(bytes);
+}
+
+std::string arg_from_text(std::string_view text) {
+  const std::string_view tag(kTextTag);
+  if (text.substr(0, tag.size()) != tag) {
+    std::size_t colon = text.find(':');
+    if (colon != std::string_view::npos && colon < 16 && text.substr(0, 3) == "arg")
+      fail("unsupported text version tag \"" + std::string(text.substr(0, colon + 1)) +
+           "\" (expected \"arg1:\")");
+    fail("text form must start with \"arg1:\"");
+  }
+  std::string bytes = base64_decode(text.substr(tag.size()));
+  validate_arg_bytes(bytes);
+  return bytes;
+}
+
+}  // namespace arg

@@ -1,0 +1,35 @@
+// MPAIR: coarse-to-fine topological matching of two multiresolution Reeb graphs.
+#pragma once
+
+#include <vector>
+
+#include "graph/arg_graph.hpp"
+#include "match/weights.hpp"
+
+namespace arg {
+
+// Nodes of X matched with nodes of Y as one unit (usually one node each; a node may match a
+// group of nodes of the same interval and parent). Node indices are global.
+struct MatchGroup {
+  int level = 0;
+  std::vector<int> x, y;
+  double loss = 0;  // loss of the pair that founded the group
+};
+
+// Matches X and Y level by level from the coarsest. At each level, nodes of X are taken in
+// decreasing order of their own sim (their weight in SIM; ties by index); each takes, among
+// the unmatched nodes of Y that are candidates, the one of least loss (ties: larger sim, then
+// smaller index). (m, n) is a candidate when
+//   - both lie in the same mu interval;
+//   - their parents were matched to each other at the previous level (level 0: always);
+//   - they carry the same branch label: a match labels the branch through each of its nodes
+//     (walking to neighbours up and down until a fork) with a fresh label, so that a branch is
+//     matched to one branch only (Hilaga et al.);
+//   - with weights.tung_rule: on each side (up, down), when parents of neighbours of m and of
+//     n are matched, at least one such parent of m is matched to one of n (Tung and Schmitt).
+// Then each still unmatched node whose parent is matched joins the group of a matched node
+// of the same interval and parent, when there is one (least loss first).
+// Groups come back sorted by (level, smallest x node).
+std::vector<MatchGroup> match_graphs(const ArgGraph& x, const ArgGraph& y, const Weights& weights);
+
+}  // namespace arg

@@ -1,0 +1,142 @@
+// Presets, parsing, validation and printing of matching weights.
+#include "match/weights.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <utility>
+
+#include "common/errors.hpp"
+#include "common/key_values.hpp"
+
+namespace arg {
+
+namespace {
+
+constexpr const char* kWhat = "weights";
+
+struct Field {
+  const char* name;
+  float Weights::*member;
+};
+constexpr Field kFields[] = {
+    {"alpha_l", &Weights::alpha_l},   {"beta_l", &Weights::beta_l},
+    {"gamma_l", &Weights::gamma_l},   {"delta_l", &Weights::delta_l},
+    {"eps_l", &Weights::eps_l},       {"alpha_s", &Weights::alpha_s},
+    {"beta_s", &Weights::beta_s},     {"lambda_1", &Weights::lambda_1},
+    {"lambda_2", &Weights::lambda_2}, {"lambda_3", &Weights::lambda_3},
+    {"lambda_4", &Weights::lambda_4},
+};
+
+bool try_preset(std::string_view name, Weights& w) {
+  Weights arg;  // the defaults are the paper's section 6 values plus our feature weights
+  arg.lambda_1 = 0.2f, arg.lambda_2 = 0.2f, arg.lambda_3 = 0.1f, arg.lambda_4 = 0.1f;
+  if (name == "arg") {
+    w = arg;
+  } else if (name == "mrg") {  // Hilaga et al.: topology only, equal weights
+    w = Weights{};
+    w.alpha_l = w.beta_l = 0.5f;
+    w.gamma_l = w.delta_l = w.eps_l = 0;
+    w.alpha_s = w.beta_s = 0.5f;
+    w.lambda_1 = w.lambda_2 = w.lambda_3 = w.lambda_4 = 0;
+    w.tung_rule = false;
+  } else if (name == "shape") {  // geometry and features, colour ignored
+    w = arg;
+    w.lambda_4 = 0;
+  } else if (name == "colour" || name == "color") {  // appearance first
+    w = arg;
+    w.lambda_4 = 1.0f;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+void validate(const Weights& w) {
+  for (const Field& f : kFields) {
+    float x = w.*f.member;
+    if (!std::isfinite(x) || x < 0)
+      throw InputError(std::string(kWhat) + ": " + f.name + " must be finite and >= 0");
+  }
+  if (w.alpha_s + w.beta_s + w.lambda_1 + w.lambda_2 + w.lambda_3 + w.lambda_4 <= 0)
+    throw InputError(std::string(kWhat) +
+                     ": at least one of alpha_s, beta_s, lambda_1..lambda_4 must be positive");
+}
+
+}  // namespace
+
+Weights weights_preset(std::string_view name) {
+  Weights w;
+  if (!try_preset(name, w))
+    throw InputError(std::string(kWhat) + ": unknown preset \"" + std::string(name) +
+                     "\" (expected arg, mrg, shape or colour)");
+  return w;
+}
+
+Weights parse_weights(std::string_view text) {
+  Weights w = weights_preset("arg");
+  auto pairs = split_key_values(text, kWhat);
+  if (pairs.empty())
+    throw InputError("weights: empty text (give a preset name or key=value pairs)");
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const auto& [key, value] = pairs[i];
+    if (value.empty()) {
+      if (i != 0 || !try_preset(key, w))
+        throw InputError("weights: \"" + key + "\" is not a preset (arg, mrg, shape, colour) " +
+                         (i != 0 ? "or the preset is not first" : "nor key=value"));
+      continue;
+    }
+    if (key == "norm") {
+      if (value == "l1")
+        w.l2 = false;
+      else if (value == "l2")
+        w.l2 = true;
+      else
+        throw InputError("weights: norm=" + value + " (expected l1 or l2)");
+      continue;
+    }
+    if (key == "tung") {
+      if (value == "on")
+        w.tung_rule = true;
+      else if (value == "off")
+        w.tung_rule = false;
+      else
+        throw InputError("weights: tung=" + value + " (expected on or off)");
+      continue;
+    }
+    bool known = false;
+    for (const Field& f : kFields)
+      if (key == f.name) {
+        double x = parse_finite_number(value, key, kWhat);
+        if (x < 0 || x > 1e6)
+          throw InputError("weights: " + key + "=" + value + " must be in [0, 1e6]");
+        w.*f.member = float(x);
+        known = true;
+      }
+    if (!known)
+      throw InputError("weights: unknown key \"" + key +
+                       "\" (expected alpha_l beta_l gamma_l delta_l eps_l alpha_s beta_s "
+                       "lambda_1..lambda_4 norm tung)");
+  }
+  validate(w);
+  return w;
+}
+
+std::string format_weights(const Weights& w) {
+  std::string out;
+  char buf[64];
+  for (const Field& f : kFields) {
+    std::snprintf(buf, sizeof buf, "%s=%.9g ", f.name, double(w.*f.member));
+    out += buf;
+  }
+  out += w.l2 ? "norm=l2 " : "norm=l1 ";
+  out += w.tung_rule ? "tung=on" : "tung=off";
+  return out;
+}
+
+bool operator==(const Weights& a, const Weights& b) {
+  for (const Field& f : kFields)
+    if (a.*f.member != b.*f.member) return false;
+  return a.l2 == b.l2 && a.tung_rule == b.tung_rule;
+}
+
+}  // namespace arg

@@ -1,0 +1,41 @@
+// Building the undirected edge table of a triangle mesh by sorting half-edges.
+#include "mesh/mesh_edges.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace arg {
+
+MeshEdges mesh_edges(const Triangles& F) {
+  struct HalfEdge {
+    int a, b, face;
+    std::int8_t corner;
+  };
+  std::vector<HalfEdge> half(std::size_t(F.rows()) * 3);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      int a = F(f, c), b = F(f, (c + 1) % 3);
+      half[std::size_t(f) * 3 + c] = {std::min(a, b), std::max(a, b), int(f), std::int8_t(c)};
+    }
+  std::sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
+    if (x.a != y.a) return x.a < y.a;
+    if (x.b != y.b) return x.b < y.b;
+    return x.face < y.face;
+  });
+  MeshEdges E;
+  E.face_of.reserve(half.size());
+  E.corner_of.reserve(half.size());
+  for (std::size_t i = 0; i < half.size(); ++i) {
+    if (i == 0 || half[i].a != half[i - 1].a || half[i].b != half[i - 1].b) {
+      E.v0.push_back(half[i].a);
+      E.v1.push_back(half[i].b);
+      E.face_begin.push_back(int(E.face_of.size()));
+    }
+    E.face_of.push_back(half[i].face);
+    E.corner_of.push_back(half[i].corner);
+  }
+  E.face_begin.push_back(int(E.face_of.size()));
+  return E;
+}
+
+}  // namespace arg

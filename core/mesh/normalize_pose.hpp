@@ -1,0 +1,26 @@
+// Pose normalisation: centre of mass at the origin, principal axes on x, y, z, unit RMS radius.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "mesh/mesh.hpp"
+
+namespace arg {
+
+struct Pose {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();        // area-weighted centre of mass
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // rows: principal axes, largest first
+  Eigen::Vector3d eigenvalues = Eigen::Vector3d::Zero();   // surface covariance, descending
+  double scale = 1;  // multiply by this to reach unit RMS distance from the centre
+  double area = 0;   // surface area before scaling
+};
+
+// Computes the pose of a surface from exact area integrals over its triangles. Axis signs follow
+// the third moment (the heavier tail of the surface along each axis points to +), so mirror
+// images get the same frame; an axis with a vanishing third moment keeps the solver's sign.
+Pose surface_pose(const Mesh& mesh);
+
+// Applies a pose: V' = scale * rotation * (V - centre).
+Mesh apply_pose(const Mesh& mesh, const Pose& pose);
+
+}  // namespace arg

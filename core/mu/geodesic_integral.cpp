@@ -1,0 +1,112 @@
+// Hilaga's geodesic integral: K base points, Voronoi area weights, Dijkstra per base point.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <thread>
+
+#include "mu/dijkstra.hpp"
+#include "mu/mu_function.hpp"
+#include "mu/surface_graph.hpp"
+
+namespace arg {
+
+namespace {
+
+// Farthest point sampling in space, from the vertex farthest from the centre of mass (the
+// origin of a pose-normalised mesh), so the choice does not depend on vertex order.
+std::vector<int> spread_base_points(const Vertices& V, int count) {
+  const int n = int(V.rows());
+  count = std::min(count, n);
+  std::vector<int> chosen;
+  std::vector<double> gap(std::size_t(n), std::numeric_limits<double>::infinity());
+  int next = 0;
+  for (int v = 1; v < n; ++v)
+    if (V.row(v).squaredNorm() > V.row(next).squaredNorm()) next = v;
+  while (int(chosen.size()) < count) {
+    chosen.push_back(next);
+    int far = 0;
+    for (int v = 0; v < n; ++v) {
+      gap[v] = std::min(gap[v], (V.row(v) - V.row(next)).squaredNorm());
+      if (gap[v] > gap[far]) far = v;
+    }
+    if (gap[far] == 0) break;
+    next = far;
+  }
+  return chosen;
+}
+
+// A third of the area of the faces around each vertex.
+std::vector<double> vertex_areas(const Mesh& mesh) {
+  std::vector<double> area(std::size_t(mesh.V.rows()), 0.0);
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    Eigen::RowVector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)),
+                       c = mesh.V.row(mesh.F(f, 2));
+    double third = 0.5 * (b - a).cross(c - a).norm() / 3.0;
+    for (int k = 0; k < 3; ++k) area[mesh.F(f, k)] += third;
+  }
+  return area;
+}
+
+// Typical edge length of a mesh of the same area made of about `faces` equilateral triangles.
+double target_edge(double area, double faces) {
+  return std::sqrt(4.0 * area / (std::sqrt(3.0) * faces));
+}
+
+}  // namespace
+
+std::vector<double> geodesic_integral(const Mesh& mesh, const MeshEdges& edges, int base_points,
+                                      int threads, const StopRequested& stop) {
+  const int nv = int(mesh.V.rows());
+  std::vector<double> varea = vertex_areas(mesh);
+  double total_area = 0;
+  for (double a : varea) total_area += a;
+  SurfaceGraph graph = surface_graph(mesh, edges, 2.0 * target_edge(total_area, 4000.0));
+  check_interrupt(stop);
+
+  std::vector<int> base = spread_base_points(mesh.V, base_points);
+  std::vector<float> dist;
+  std::vector<int> nearest;
+  shortest_paths(graph, base, dist, &nearest, stop);
+  std::vector<double> weight(base.size(), 0.0);
+  for (int v = 0; v < nv; ++v)
+    if (nearest[v] >= 0) weight[nearest[v]] += varea[v];
+
+  std::vector<double> mu(std::size_t(nv), 0.0);
+  const int workers = std::max(1, std::min(threads, int(base.size())));
+  // Blocks of base points run in parallel; their distances are added in base-point order, so
+  // the sum (and so the ARG bytes) does not depend on the number of threads.
+  const int block = workers;
+  std::vector<std::vector<float>> buffers(static_cast<std::size_t>(block));
+  for (std::size_t start = 0; start < base.size(); start += std::size_t(block)) {
+    const int here = int(std::min<std::size_t>(std::size_t(block), base.size() - start));
+    auto run = [&](int k) {
+      shortest_paths(graph, {base[start + std::size_t(k)]}, buffers[k], nullptr, stop);
+    };
+    if (here == 1 || workers == 1) {
+      for (int k = 0; k < here; ++k) run(k);
+    } else {
+      std::vector<std::thread> pool;
+      std::vector<std::exception_ptr> errors(static_cast<std::size_t>(here));
+      for (int k = 0; k < here; ++k)
+        pool.emplace_back([&, k] {
+          try {
+            run(k);
+          } catch (...) {
+            errors[k] = std::current_exception();
+          }
+        });
+      for (auto& t : pool) t.join();
+      for (auto& e : errors)
+        if (e) std::rethrow_exception(e);
+    }
+    for (int k = 0; k < here; ++k) {
+      const double s = weight[start + std::size_t(k)];
+      const std::vector<float>& d = buffers[k];
+      for (int v = 0; v < nv; ++v)
+        if (std::isfinite(d[v])) mu[v] += s * double(d[v]);
+    }
+  }
+  return mu;
+}
+
+}  // namespace arg

@@ -1,0 +1,108 @@
+// SIM between ARGs: identity, symmetry, positivity, and the weights that drive it.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <tuple>
+
+#include "build/build_arg.hpp"
+#include "common/errors.hpp"
+#include "match/similarity.hpp"
+#include "match/weights.hpp"
+#include "test_shapes.hpp"
+
+using namespace arg;
+
+namespace {
+
+const std::vector<ArgGraph>& shapes() {
+  static const std::vector<ArgGraph> graphs = [] {
+    std::vector<ArgGraph> g;
+    g.push_back(build_arg(test::torus()));
+    g.push_back(build_arg(test::torus(2.5, 0.5, 70, 28)));
+    g.push_back(build_arg(test::capsule()));
+    g.push_back(build_arg(test::capsule(2, 0.7)));
+    g.push_back(build_arg(test::sphere(40, 60, 2, 1, 0.7)));
+    g.push_back(build_arg(test::sphere()));
+    return g;
+  }();
+  return graphs;
+}
+
+}  // namespace
+
+TEST(Similarity, SelfSimilarityIsZeroForEveryPreset) {
+  for (const char* preset : {"arg", "mrg", "shape", "colour"})
+    for (const ArgGraph& g : shapes())
+      EXPECT_EQ(arg_similarity(g, g, weights_preset(preset)), 0.0) << preset;
+}
+
+TEST(Similarity, IsExactlySymmetricAndWithinZeroAndOne) {
+  const auto& g = shapes();
+  for (const char* preset : {"arg", "mrg"})
+    for (std::size_t i = 0; i < g.size(); ++i)
+      for (std::size_t j = 0; j < g.size(); ++j) {
+        Weights w = weights_preset(preset);
+        double ab = arg_similarity(g[i], g[j], w), ba = arg_similarity(g[j], g[i], w);
+        EXPECT_EQ(ab, ba) << i << " " << j;
+        EXPECT_GE(ab, 0.0);
+        EXPECT_LE(ab, 1.0);
+        if (i != j) EXPECT_GT(ab, 0.0) << i << " " << j;
+      }
+}
+
+TEST(Similarity, ATorusIsCloserToATorusThanToACapsule) {
+  const auto& g = shapes();
+  EXPECT_LT(arg_similarity(g[0], g[1]), arg_similarity(g[0], g[2]));
+  EXPECT_LT(arg_similarity(g[2], g[3]), arg_similarity(g[2], g[0]));
+}
+
+TEST(Similarity, MatchesListPairsOfBothGraphsLevelByLevel) {
+  const auto& g = shapes();
+  std::vector<MatchPair> pairs;
+  double s = arg_similarity(g[0], g[1], Weights{}, &pairs);
+  EXPECT_GT(s, 0.0);
+  ASSERT_FALSE(pairs.empty());
+  EXPECT_EQ(pairs.front().level, 0);
+  for (std::size_t k = 1; k < pairs.size(); ++k) EXPECT_LE(pairs[k - 1].level, pairs[k].level);
+  // Swapping the arguments swaps the sides of every pair.
+  std::vector<MatchPair> swapped;
+  arg_similarity(g[1], g[0], Weights{}, &swapped);
+  ASSERT_EQ(swapped.size(), pairs.size());
+  std::multiset<std::tuple<int, int, int>> forward, backward;
+  for (auto& p : pairs) forward.insert({p.level, p.a_node, p.b_node});
+  for (auto& p : swapped) backward.insert({p.level, p.b_node, p.a_node});
+  EXPECT_EQ(forward, backward);
+}
+
+TEST(Weights, TextRoundTripAndPresets) {
+  for (const char* preset : {"arg", "mrg", "shape", "colour"}) {
+    Weights w = weights_preset(preset);
+    EXPECT_EQ(parse_weights(format_weights(w)), w) << preset;
+    EXPECT_EQ(parse_weights(preset), w);
+  }
+  Weights w = parse_weights("shape lambda_4=0.25, norm=l2 tung=off");
+  EXPECT_FLOAT_EQ(w.lambda_4, 0.25f);
+  EXPECT_TRUE(w.l2);
+  EXPECT_FALSE(w.tung_rule);
+  EXPECT_FALSE(weights_preset("mrg").tung_rule);
+}
+
+TEST(Weights, RejectBadTextWithAClearMessage) {
+  auto message = [](const char* text) {
+    try {
+      parse_weights(text);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(message("alpha_l=-1").find("alpha_l"), std::string::npos);
+  EXPECT_NE(message("alpha_l=nan").find("not a finite number"), std::string::npos);
+  EXPECT_NE(message("bogus=1").find("unknown key"), std::string::npos);
+  EXPECT_NE(message("fancy").find("not a preset"), std::string::npos);
+  EXPECT_NE(message("").find("empty"), std::string::npos);
+  EXPECT_NE(
+      message("alpha_s=0 beta_s=0 lambda_1=0 lambda_2=0 lambda_3=0 lambda_4=0").find("positive"),
+      std::string::npos);
+  EXPECT_NE(message("alpha_l=").find("malformed"), std::string::npos);
+}
