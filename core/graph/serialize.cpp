@@ -7,6 +7,7 @@
 #include "common/base64.hpp"
 #include "common/byte_io.hpp"
 #include "common/errors.hpp"
+#include "common/hash.hpp"
 
 namespace arg {
 
@@ -34,17 +35,9 @@ void for_each_field(Node& n, F&& f) {
   for (auto& x : n.colour) f(x);
 }
 
-std::uint64_t fnv1a(std::string_view bytes, std::uint64_t h = 1469598103934665603ull) {
-  for (char c : bytes) {
-    h ^= static_cast<unsigned char>(c);
-    h *= 1099511628211ull;
-  }
-  return h;
-}
-
 // FNV-1a over every byte but the digest's own eight.
 std::uint64_t content_digest(std::string_view bytes) {
-  return fnv1a(bytes.substr(kDigestEnd), fnv1a(bytes.substr(0, kDigestAt)));
+  return fnv1a_64(bytes.substr(kDigestEnd), fnv1a_64(bytes.substr(0, kDigestAt)));
 }
 
 struct Header {

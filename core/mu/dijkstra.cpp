@@ -1,44 +1,167 @@
-// Dijkstra with a binary heap and lazy deletion; ties resolved by node index for determinism.
+// Dijkstra with an indexed 4-ary heap (decrease-key in place, no stale entries).
 #include "mu/dijkstra.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
-#include <queue>
-#include <utility>
 
 namespace arg {
+
+namespace {
+
+// Min-heap of node ids keyed by their current distance; pos[v] = slot of v or -1.
+class QuadHeap {
+ public:
+  QuadHeap(int n, const std::vector<float>& key)
+      : key_(key), pos_(static_cast<std::size_t>(n), -1) {
+    heap_.reserve(static_cast<std::size_t>(n));
+  }
+  bool empty() const { return heap_.empty(); }
+  void push_or_decrease(int v) {
+    int i = pos_[std::size_t(v)];
+    if (i < 0) {
+      i = int(heap_.size());
+      heap_.push_back(v);
+    }
+    sift_up(i, v);
+  }
+  int pop() {
+    int top = heap_[0];
+    pos_[std::size_t(top)] = -2;  // settled
+    int last = heap_.back();
+    heap_.pop_back();
+    if (!heap_.empty()) sift_down(0, last);
+    return top;
+  }
+  bool settled(int v) const { return pos_[std::size_t(v)] == -2; }
+
+ private:
+  bool less(int a, int b) const {
+    float ka = key_[std::size_t(a)], kb = key_[std::size_t(b)];
+    return ka < kb || (ka == kb && a < b);
+  }
+  void place(int i, int v) {
+    heap_[std::size_t(i)] = v;
+    pos_[std::size_t(v)] = i;
+  }
+  void sift_up(int i, int v) {
+    while (i > 0) {
+      int parent = (i - 1) >> 2;
+      int pv = heap_[std::size_t(parent)];
+      if (!less(v, pv)) break;
+      place(i, pv);
+      i = parent;
+    }
+    place(i, v);
+  }
+  void sift_down(int i, int v) {
+    const int n = int(heap_.size());
+    while (true) {
+      int first = 4 * i + 1;
+      if (first >= n) break;
+      int best = first;
+      int end = first + 4 < n ? first + 4 : n;
+      for (int c = first + 1; c < end; ++c)
+        if (less(heap_[std::size_t(c)], heap_[std::size_t(best)])) best = c;
+      if (!less(heap_[std::size_t(best)], v)) break;
+      place(i, heap_[std::size_t(best)]);
+      i = best;
+    }
+    place(i, v);
+  }
+
+  const std::vector<float>& key_;
+  std::vector<int> pos_;
+  std::vector<int> heap_;
+};
+
+}  // namespace
 
 void shortest_paths(const SurfaceGraph& g, const std::vector<int>& sources,
                     std::vector<float>& distance, std::vector<int>* nearest,
                     const StopRequested& stop) {
   const int n = g.nodes();
-  distance.assign(std::size_t(n), std::numeric_limits<float>::infinity());
-  if (nearest) nearest->assign(std::size_t(n), -1);
-  using Item = std::pair<float, int>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
+  distance.assign(static_cast<std::size_t>(n), std::numeric_limits<float>::infinity());
+  if (nearest) nearest->assign(static_cast<std::size_t>(n), -1);
+  QuadHeap heap(n, distance);
   for (std::size_t s = 0; s < sources.size(); ++s) {
     int v = sources[s];
-    if (distance[v] == 0) continue;
-    distance[v] = 0;
-    if (nearest) (*nearest)[v] = int(s);
-    heap.emplace(0.0f, v);
+    if (distance[std::size_t(v)] == 0) continue;
+    distance[std::size_t(v)] = 0;
+    if (nearest) (*nearest)[std::size_t(v)] = int(s);
+    heap.push_or_decrease(v);
   }
   std::size_t pops = 0;
   while (!heap.empty()) {
-    auto [d, v] = heap.top();
-    heap.pop();
-    if (d > distance[v]) continue;
+    const int v = heap.pop();
     if ((++pops & 8191) == 0) check_interrupt(stop);
-    for (int k = g.offset[v]; k < g.offset[v + 1]; ++k) {
-      int w = g.target[k];
-      float nd = d + g.length[k];
-      if (nd < distance[w]) {
-        distance[w] = nd;
-        if (nearest) (*nearest)[w] = (*nearest)[v];
-        heap.emplace(nd, w);
+    const float d = distance[std::size_t(v)];
+    for (int k = g.offset[std::size_t(v)]; k < g.offset[std::size_t(v) + 1]; ++k) {
+      const int w = g.target[std::size_t(k)];
+      const float nd = d + g.length[std::size_t(k)];
+      if (nd < distance[std::size_t(w)]) {
+        distance[std::size_t(w)] = nd;
+        if (nearest) (*nearest)[std::size_t(w)] = (*nearest)[std::size_t(v)];
+        heap.push_or_decrease(w);
       }
     }
   }
+}
+
+}  // namespace arg
+
+namespace arg {
+
+void prepare_buckets(const SurfaceGraph& g, BucketScratch& s) {
+  double sum = 0, longest = 0;
+  for (float len : g.length) sum += len, longest = std::max(longest, double(len));
+  const double mean = g.length.empty() ? 1.0 : sum / double(g.length.size());
+  // About 32 steps per typical edge; coarser when a very long edge (a link between parts)
+  // would need more than 2^16 buckets.
+  s.unit = std::max(mean / 32.0, longest / 65535.0);
+  if (!(s.unit > 0)) s.unit = 1.0;
+  s.length.resize(g.length.size());
+  std::uint32_t max_len = 0;
+  for (std::size_t k = 0; k < g.length.size(); ++k) {
+    s.length[k] = std::uint32_t(std::lround(double(g.length[k]) / s.unit));
+    max_len = std::max(max_len, s.length[k]);
+  }
+  s.buckets.assign(std::size_t(max_len) + 1, {});
+}
+
+void shortest_paths_quantised(const SurfaceGraph& g, int source, std::vector<float>& distance,
+                              BucketScratch& s, const StopRequested& stop) {
+  const std::size_t n = std::size_t(g.nodes());
+  const std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+  s.dist.assign(n, none);
+  const std::size_t ring = s.buckets.size();
+  for (auto& b : s.buckets) b.clear();
+  s.dist[std::size_t(source)] = 0;
+  s.buckets[0].push_back(source);
+  std::size_t pending = 1, pops = 0;
+  for (std::uint64_t current = 0; pending > 0; ++current) {
+    std::vector<int>& bucket = s.buckets[current % ring];
+    while (!bucket.empty()) {
+      const int v = bucket.back();
+      bucket.pop_back();
+      --pending;
+      if (s.dist[std::size_t(v)] != current) continue;  // a stale entry
+      if ((++pops & 8191) == 0) check_interrupt(stop);
+      for (int k = g.offset[std::size_t(v)]; k < g.offset[std::size_t(v) + 1]; ++k) {
+        const int w = g.target[std::size_t(k)];
+        const std::uint64_t nd = current + s.length[std::size_t(k)];
+        if (nd < s.dist[std::size_t(w)]) {
+          s.dist[std::size_t(w)] = std::uint32_t(nd);
+          s.buckets[nd % ring].push_back(w);
+          ++pending;
+        }
+      }
+    }
+  }
+  distance.resize(n);
+  for (std::size_t v = 0; v < n; ++v)
+    distance[v] =
+        s.dist[v] == none ? std::numeric_limits<float>::infinity() : float(s.dist[v] * s.unit);
 }
 
 }  // namespace arg

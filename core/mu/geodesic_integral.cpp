@@ -77,10 +77,13 @@ std::vector<double> geodesic_integral(const Mesh& mesh, const MeshEdges& edges, 
   // the sum (and so the ARG bytes) does not depend on the number of threads.
   const int block = workers;
   std::vector<std::vector<float>> buffers(static_cast<std::size_t>(block));
+  std::vector<BucketScratch> scratch(static_cast<std::size_t>(block));
+  for (auto& s : scratch) prepare_buckets(graph, s);
   for (std::size_t start = 0; start < base.size(); start += std::size_t(block)) {
     const int here = int(std::min<std::size_t>(std::size_t(block), base.size() - start));
     auto run = [&](int k) {
-      shortest_paths(graph, {base[start + std::size_t(k)]}, buffers[k], nullptr, stop);
+      shortest_paths_quantised(graph, base[start + std::size_t(k)], buffers[std::size_t(k)],
+                               scratch[std::size_t(k)], stop);
     };
     if (here == 1 || workers == 1) {
       for (int k = 0; k < here; ++k) run(k);

@@ -1,0 +1,86 @@
+// NN, first and second tier, E-measure, DCG, mAP and the precision-recall curve.
+#include "eval/retrieval_metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace arg {
+
+RetrievalScores retrieval_scores(const std::vector<double>& distance, const std::vector<int>& label,
+                                 int classes, const std::vector<bool>& valid_in) {
+  const int n = int(label.size());
+  std::vector<bool> valid = valid_in.empty() ? std::vector<bool>(std::size_t(n), true) : valid_in;
+  std::vector<int> class_size(std::size_t(classes), 0);
+  for (int c : label) ++class_size[std::size_t(c)];
+  RetrievalScores out;
+  out.precision_at_recall.assign(kRecallPoints, 0.0);
+  out.ft_per_class.assign(std::size_t(classes), 0.0);
+  std::vector<int> queries_per_class(std::size_t(classes), 0);
+  std::vector<int> order;
+  int counted = 0;
+  for (int q = 0; q < n; ++q) {
+    const int c = label[std::size_t(q)];
+    const int relevant = class_size[std::size_t(c)] - 1;
+    if (relevant <= 0) continue;  // a class of one has nothing to find
+    ++counted;
+    ++queries_per_class[std::size_t(c)];
+    if (!valid[std::size_t(q)]) continue;
+    order.clear();
+    for (int j = 0; j < n; ++j)
+      if (j != q) order.push_back(j);
+    auto key = [&](int j) {
+      return valid[std::size_t(j)] ? distance[std::size_t(q) * std::size_t(n) + std::size_t(j)]
+                                   : HUGE_VAL;
+    };
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+      double da = key(a), db = key(b);
+      return da != db ? da < db : a < b;
+    });
+    int found = 0, in_first = 0, in_second = 0, in_32 = 0;
+    double dcg = 0, ap = 0;
+    std::vector<double> precision_at_hit;
+    for (std::size_t rank = 1; rank <= order.size(); ++rank) {
+      const bool hit = label[std::size_t(order[rank - 1])] == c;
+      if (!hit) continue;
+      ++found;
+      if (int(rank) <= relevant) ++in_first;
+      if (int(rank) <= 2 * relevant) ++in_second;
+      if (rank <= 32) ++in_32;
+      dcg += rank == 1 ? 1.0 : 1.0 / std::log2(double(rank));
+      double precision = double(found) / double(rank);
+      ap += precision;
+      precision_at_hit.push_back(precision);
+    }
+    double ideal = 1.0;
+    for (int k = 2; k <= relevant; ++k) ideal += 1.0 / std::log2(double(k));
+    out.nn += label[std::size_t(order[0])] == c ? 1.0 : 0.0;
+    const double ft = double(in_first) / relevant;
+    out.ft += ft;
+    out.ft_per_class[std::size_t(c)] += ft;
+    out.st += double(in_second) / relevant;
+    const double p32 = in_32 / 32.0, r32 = double(in_32) / relevant;
+    out.e += p32 + r32 > 0 ? 2.0 * p32 * r32 / (p32 + r32) : 0.0;
+    out.dcg += dcg / ideal;
+    out.map += ap / relevant;
+    // Interpolated precision: the best precision at any recall at least r.
+    for (int k = 0; k < kRecallPoints; ++k) {
+      const double recall = double(k + 1) / kRecallPoints;
+      const std::size_t needed = std::size_t(std::ceil(recall * relevant - 1e-9));
+      double best = 0;
+      for (std::size_t h = needed == 0 ? 0 : needed - 1; h < precision_at_hit.size(); ++h)
+        best = std::max(best, precision_at_hit[h]);
+      out.precision_at_recall[std::size_t(k)] += best;
+    }
+  }
+  if (counted > 0) {
+    for (double* x : {&out.nn, &out.ft, &out.st, &out.e, &out.dcg, &out.map}) *x /= counted;
+    for (double& p : out.precision_at_recall) p /= counted;
+  }
+  for (int c = 0; c < classes; ++c)
+    if (queries_per_class[std::size_t(c)] > 0)
+      out.ft_per_class[std::size_t(c)] /= queries_per_class[std::size_t(c)];
+  return out;
+}
+
+}  // namespace arg

@@ -1,0 +1,27 @@
+// Retrieval quality measures of the Princeton Shape Benchmark over a full distance matrix.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace arg {
+
+inline constexpr int kRecallPoints = 20;  // precision-recall curve at recall 0.05, 0.10, .. 1
+
+struct RetrievalScores {
+  double nn = 0, ft = 0, st = 0, e = 0, dcg = 0, map = 0;  // means over queries, in [0, 1]
+  std::vector<double> precision_at_recall;  // kRecallPoints values (interpolated precision)
+  std::vector<double> ft_per_class;         // mean first tier of the queries of each class
+};
+
+// `distance` is row-major n x n (row = query); smaller is closer. `label` gives each model's
+// class index in [0, classes). A model with `valid` false is a miss as a query (all zeros)
+// and ranks last as a result. Each query ranks the n - 1 other models by (distance, index).
+// NN: the first result is of the query's class. FT / ST: share of the class (size C, minus
+// the query) found in the first C - 1 / 2(C - 1) results. E: F-measure of the first 32
+// results. DCG: sum of 1/log2(rank) over relevant results (rank 1 counts 1), divided by its
+// ideal value. mAP: mean over relevant results of the precision at their rank.
+RetrievalScores retrieval_scores(const std::vector<double>& distance, const std::vector<int>& label,
+                                 int classes, const std::vector<bool>& valid = {});
+
+}  // namespace arg

@@ -1,0 +1,46 @@
+// Reading ARG files and building ARGs from mesh files for the argtool subcommands.
+#include "load_arg.hpp"
+
+#include "command_registry.hpp"
+#include "common/errors.hpp"
+#include "graph/serialize.hpp"
+
+namespace argtool {
+
+LoadedArg load_arg(const std::string& path, const arg::BuildOptions& options,
+                   const std::string& texture_path) {
+  LoadedArg out;
+  std::string bytes = read_file_bytes(path);
+  if (bytes.compare(0, 4, "ARGR") == 0) {
+    out.graph = arg::deserialize_arg(bytes);
+    out.bytes = std::move(bytes);
+    return out;
+  }
+  std::string texture = texture_path.empty() ? std::string() : read_file_bytes(texture_path);
+  try {
+    out.bytes = arg::build_arg_bytes(bytes, texture, options, {}, {}, &out.report);
+  } catch (const arg::Error& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
+  out.graph = arg::deserialize_arg(out.bytes);
+  out.built = true;
+  return out;
+}
+
+void add_build_flags(CLI::App& app, arg::BuildOptions& options) {
+  app.add_option("--levels", options.levels, "finest level n (2^n intervals of mu)")
+      ->check(CLI::Range(1, arg::kMaxLevels));
+  app.add_option_function<std::string>(
+         "--mu",
+         [&options](const std::string& kind) {
+           options = arg::parse_build_options(arg::format_build_options(options) + " mu=" + kind);
+         },
+         "geodesic (default), height or centroid")
+      ->check(CLI::IsMember({"geodesic", "height", "centroid"}));
+  app.add_option("--base-points", options.base_points, "base points of the geodesic integral")
+      ->check(CLI::Range(8, 4096));
+  app.add_option("--threads", options.threads, "threads for mu (never changes the result)")
+      ->check(CLI::Range(1, 256));
+}
+
+}  // namespace argtool

@@ -1,0 +1,27 @@
+// Loading an ARG from a file that holds either an ARG or a mesh (built on the fly).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "build/build_arg.hpp"
+#include "graph/arg_graph.hpp"
+
+namespace argtool {
+
+struct LoadedArg {
+  arg::ArgGraph graph;
+  std::string bytes;        // the binary form
+  bool built = false;       // true when the file was a mesh
+  arg::BuildReport report;  // filled when built
+};
+
+// Files starting with the ARG magic are read as ARGs; anything else is built as a mesh with
+// `options` (and the texture file, when given).
+LoadedArg load_arg(const std::string& path, const arg::BuildOptions& options = {},
+                   const std::string& texture_path = "");
+
+// Adds --levels, --mu and --base-points to a subcommand, writing into `options`.
+void add_build_flags(CLI::App& app, arg::BuildOptions& options);
+
+}  // namespace argtool

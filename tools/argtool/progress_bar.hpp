@@ -1,0 +1,45 @@
+// A one-line progress bar on stderr, redrawn while worker threads advance a counter.
+#pragma once
+
+#include <unistd.h>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace argtool {
+
+// Runs `work(index)` for index in [0, count) on `threads` threads (each index once, any
+// order) while drawing "label  done/count [=====     ]" on stderr.
+template <class Work>
+void run_with_progress(const std::string& label, std::size_t count, int threads, Work&& work) {
+  std::atomic<std::size_t> next{0}, done{0};
+  auto worker = [&] {
+    for (std::size_t i = next++; i < count; i = next++) {
+      work(i);
+      ++done;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  std::thread drawer([&] {
+    const bool tty = isatty(2);
+    while (true) {
+      std::size_t d = done.load();
+      int filled = count ? int(30 * d / count) : 30;
+      std::fprintf(stderr, "\r%-12s %zu/%zu [%s%s]", label.c_str(), d, count,
+                   std::string(std::size_t(filled), '=').c_str(),
+                   std::string(std::size_t(30 - filled), ' ').c_str());
+      if (d >= count) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(tty ? 100 : 2000));
+    }
+    std::fprintf(stderr, "\n");
+  });
+  worker();
+  for (auto& t : pool) t.join();
+  drawer.join();
+}
+
+}  // namespace argtool
