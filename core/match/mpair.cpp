@@ -10,33 +10,34 @@ namespace arg {
 
 namespace {
 
-// Matching state of one graph.
+// Matching state of one graph; buffers are reused between calls on the same thread.
 struct Side {
-  const ArgGraph& g;
+  const ArgGraph* g = nullptr;
   std::vector<int> group;  // per node: match group, -1 when unmatched
   std::vector<int> label;  // per node: branch label at its level, 0 when none
 
-  explicit Side(const ArgGraph& graph)
-      : g(graph), group(graph.nodes.size(), -1), label(graph.nodes.size(), 0) {}
+  void reset(const ArgGraph& graph) {
+    g = &graph;
+    group.assign(graph.nodes.size(), -1);
+    label.assign(graph.nodes.size(), 0);
+  }
+  const ArgNode& node(int i) const { return g->nodes[std::size_t(i)]; }
 
-  // Neighbours of node i whose interval is interval(i) + step (step = +1 or -1).
+  // Neighbours of node i whose interval is interval(i) + step (step = +1 or -1). Nodes of a
+  // level are sorted by interval, so the neighbours below have smaller indices than i and
+  // those above larger ones: the side of a neighbour is the sign of j - i.
   template <class F>
   void for_neighbours(int i, int step, F&& f) const {
-    const ArgNode& n = g.nodes[std::size_t(i)];
-    for (std::uint32_t k = 0; k < n.adj_count; ++k) {
-      int j = int(g.adjacency[n.adj_begin + k]);
-      if (int(g.nodes[std::size_t(j)].interval) - int(n.interval) == step) f(j);
-    }
+    const ArgNode& n = node(i);
+    const std::uint32_t* adj = g->adjacency.data() + n.adj_begin;
+    for (std::uint32_t k = 0; k < n.adj_count; ++k)
+      if ((int(adj[k]) > i) == (step > 0)) f(int(adj[k]));
   }
-  int count_neighbours(int i, int step) const {
-    int c = 0;
-    for_neighbours(i, step, [&](int) { ++c; });
-    return c;
-  }
+  // The neighbour on side `step` when there is exactly one, else -1.
   int only_neighbour(int i, int step) const {
-    int last = -1;
-    for_neighbours(i, step, [&](int j) { last = j; });
-    return last;
+    int found = -1, count = 0;
+    for_neighbours(i, step, [&](int j) { found = j, ++count; });
+    return count == 1 ? found : -1;
   }
 
   // Labels the branch through i: neighbours up and down while the chain does not fork.
@@ -44,120 +45,183 @@ struct Side {
     label[std::size_t(i)] = value;
     for (int step : {+1, -1}) {
       int cur = i;
-      while (count_neighbours(cur, step) == 1) {
-        int next = only_neighbour(cur, step);
-        if (count_neighbours(next, -step) != 1 || label[std::size_t(next)] != 0) break;
+      for (int next; (next = only_neighbour(cur, step)) >= 0; cur = next) {
+        if (only_neighbour(next, -step) != cur || label[std::size_t(next)] != 0) break;
         label[std::size_t(next)] = value;
-        cur = next;
       }
     }
   }
 
   int parent_group(int i) const {
-    int p = g.nodes[std::size_t(i)].parent;
+    int p = node(i).parent;
     return p < 0 ? -2 : group[std::size_t(p)];  // -2: a root, whose "parent" always matches
   }
 };
 
-// Tung and Schmitt's rule on one side (step): matched parents of the neighbours must agree.
-bool neighbours_agree(const Side& X, const Side& Y, int m, int n, int step) {
-  int mx[16], ny[16];
-  int cx = 0, cy = 0;
-  X.for_neighbours(m, step, [&](int j) {
-    int gp = X.parent_group(j);
-    if (gp >= 0 && cx < 16) mx[cx++] = gp;
-  });
-  if (cx == 0) return true;
-  Y.for_neighbours(n, step, [&](int j) {
-    int gp = Y.parent_group(j);
-    if (gp >= 0 && cy < 16) ny[cy++] = gp;
-  });
-  if (cy == 0) return true;
-  for (int a = 0; a < cx; ++a)
-    for (int b = 0; b < cy; ++b)
-      if (mx[a] == ny[b]) return true;
-  return false;
+// For Tung and Schmitt's rule: the distinct matched groups of the parents of a node's
+// neighbours below (side 0) and above (side 1). Parents are settled before a level starts,
+// so this is computed once per node and level. Up to four groups are kept per side.
+struct NeighbourParents {
+  int group[2][4];
+  int count[2];
+};
+
+void neighbour_parents(const Side& side, int begin, int end, std::vector<NeighbourParents>& out) {
+  out.resize(std::size_t(end - begin));
+  for (int i = begin; i < end; ++i) {
+    NeighbourParents& np = out[std::size_t(i - begin)];
+    np.count[0] = np.count[1] = 0;
+    const ArgNode& n = side.node(i);
+    const std::uint32_t* adj = side.g->adjacency.data() + n.adj_begin;
+    for (std::uint32_t k = 0; k < n.adj_count; ++k) {
+      const int j = int(adj[k]);
+      const int gp = side.parent_group(j);
+      if (gp < 0) continue;
+      const int up = j > i ? 1 : 0;  // nodes of a level are sorted by interval
+      int* list = np.group[up];
+      int& c = np.count[up];
+      bool seen = false;
+      for (int q = 0; q < c; ++q) seen |= list[q] == gp;
+      if (!seen && c < 4) list[c++] = gp;
+    }
+  }
 }
 
-bool candidate(const Side& X, const Side& Y, int m, int n, const Weights& w) {
-  const ArgNode& a = X.g.nodes[std::size_t(m)];
-  const ArgNode& b = Y.g.nodes[std::size_t(n)];
-  if (a.interval != b.interval || Y.group[std::size_t(n)] >= 0) return false;
-  int pa = X.parent_group(m), pb = Y.parent_group(n);
-  if (pa == -1 || pa != pb) return false;
-  if (X.label[std::size_t(m)] != Y.label[std::size_t(n)]) return false;
-  if (w.tung_rule && !(neighbours_agree(X, Y, m, n, +1) && neighbours_agree(X, Y, m, n, -1)))
-    return false;
+// Where the parents of the neighbours of m and of n on one side are matched, at least one
+// of m's is matched to one of n's.
+bool neighbours_agree(const NeighbourParents& a, const NeighbourParents& b) {
+  for (int side = 0; side < 2; ++side) {
+    if (a.count[side] == 0 || b.count[side] == 0) continue;
+    bool shared = false;
+    for (int p = 0; p < a.count[side] && !shared; ++p)
+      for (int q = 0; q < b.count[side]; ++q) shared |= a.group[side][p] == b.group[side][q];
+    if (!shared) return false;
+  }
   return true;
 }
 
-// Unmatched nodes of `side` whose parent is matched join a group of the same interval and
-// parent; the group is chosen by the least loss against its first node on the other side.
-void extend_groups(Side& side, const Side& other, std::vector<MatchGroup>& groups, int begin,
-                   int end, bool is_x, const Weights& w) {
+// A match founded by one node of each graph; further members are listed in `extra`.
+struct Founded {
+  int level, x, y;
+  double loss;
+};
+
+struct Scratch {
+  Side x, y;
+  std::vector<int> order;
+  std::vector<double> self;
+  std::vector<int> y_interval_begin;  // per interval of the current level: first Y node
+  std::vector<NeighbourParents> x_parents, y_parents;  // per node of the current level
+  std::vector<Founded> groups;
+  std::vector<std::pair<int, int>> extra_x, extra_y;  // (group, node) beyond the founders
+};
+
+bool candidate(const Side& X, const Side& Y, int m, int n, int parent_group_m) {
+  return Y.group[std::size_t(n)] < 0 && parent_group_m == Y.parent_group(n) &&
+         X.label[std::size_t(m)] == Y.label[std::size_t(n)];
+}
+
+// Unmatched nodes of `side` whose parent is matched join a group founded at this level by a
+// node of the same interval and parent (nodes of one interval are contiguous), choosing the
+// group of least loss against its founder on the other side. Records (group, node) in `extra`.
+void extend_groups(const Side& side, const Side& other, const std::vector<Founded>& groups,
+                   int first_group, int begin, int end, bool is_x, const Weights& w,
+                   std::vector<std::pair<int, int>>& extra) {
   for (int u = begin; u < end; ++u) {
     if (side.group[std::size_t(u)] >= 0 || side.parent_group(u) < 0) continue;
-    const ArgNode& nu = side.g.nodes[std::size_t(u)];
+    const ArgNode& nu = side.node(u);
+    int lo = u, hi = u;
+    while (lo > begin && side.node(lo - 1).interval == nu.interval) --lo;
+    while (hi + 1 < end && side.node(hi + 1).interval == nu.interval) ++hi;
     int best = -1;
     double best_loss = 0;
-    for (int v = begin; v < end; ++v) {
-      int gid = side.group[std::size_t(v)];
-      if (gid < 0 || v == u) continue;
-      const ArgNode& nv = side.g.nodes[std::size_t(v)];
-      if (nv.interval != nu.interval || nv.parent != nu.parent) continue;
-      const MatchGroup& grp = groups[std::size_t(gid)];
-      int partner = is_x ? grp.y.front() : grp.x.front();
-      double loss = node_loss(nu, other.g.nodes[std::size_t(partner)], side.g.levels(), w);
+    for (int v = lo; v <= hi; ++v) {
+      const int gid = side.group[std::size_t(v)];
+      if (gid < first_group || side.node(v).parent != nu.parent) continue;
+      const Founded& grp = groups[std::size_t(gid)];
+      if ((is_x ? grp.x : grp.y) != v) continue;  // v joined a group itself; use founders
+      double loss = node_loss(nu, other.node(is_x ? grp.y : grp.x), side.g->levels(), w);
       if (best < 0 || loss < best_loss) best = gid, best_loss = loss;
     }
-    if (best < 0) continue;
-    // Only groups founded at this level are extended (v ranges over this level).
-    (is_x ? groups[std::size_t(best)].x : groups[std::size_t(best)].y).push_back(u);
+    if (best >= 0) extra.emplace_back(best, u);
   }
 }
 
 }  // namespace
 
-std::vector<MatchGroup> match_graphs(const ArgGraph& gx, const ArgGraph& gy, const Weights& w) {
-  Side X(gx), Y(gy);
-  std::vector<MatchGroup> groups;
+double node_self_sim(const ArgNode& n, const Weights& w) {
+  // Every histogram of a node sums to its area (colour: each channel), so sim(m, m) needs no
+  // bin loop.
+  return (w.alpha_s + w.lambda_2 + w.lambda_3 + w.lambda_4) * double(n.a) + w.beta_s * double(n.l) +
+         w.lambda_1 * double(n.v);
+}
+
+double match_graphs(const ArgGraph& gx, const ArgGraph& gy, const Weights& w,
+                    std::vector<MatchGroup>* groups_out, std::vector<double>* group_sim) {
+  thread_local Scratch s;
+  Side& X = s.x;
+  Side& Y = s.y;
+  X.reset(gx), Y.reset(gy);
+  s.groups.clear();
+  if (group_sim) group_sim->clear();
   const int levels = std::min(gx.levels(), gy.levels());
-  std::vector<int> order;
-  std::vector<double> self;
+  s.self.resize(gx.nodes.size());
+  for (std::size_t m = 0; m < gx.nodes.size(); ++m) s.self[m] = node_self_sim(gx.nodes[m], w);
   int next_label = 1;
+  double numerator = 0;
+  std::vector<std::pair<int, int>> all_extra_x, all_extra_y;  // only filled for groups_out
   for (int r = 0; r <= levels; ++r) {
     const int xb = int(gx.level_begin[std::size_t(r)]),
               xe = int(gx.level_begin[std::size_t(r) + 1]);
     const int yb = int(gy.level_begin[std::size_t(r)]),
               ye = int(gy.level_begin[std::size_t(r) + 1]);
-    const std::size_t level_first_group = groups.size();
-    order.resize(std::size_t(xe - xb));
-    std::iota(order.begin(), order.end(), xb);
-    self.resize(gx.nodes.size());
-    for (int m = xb; m < xe; ++m)
-      self[std::size_t(m)] = node_sim(gx.nodes[std::size_t(m)], gx.nodes[std::size_t(m)], w);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](int a, int b) { return self[std::size_t(a)] > self[std::size_t(b)]; });
-    for (int m : order) {
+    const int first_group = int(s.groups.size());
+    s.order.resize(std::size_t(xe - xb));
+    std::iota(s.order.begin(), s.order.end(), xb);
+    std::sort(s.order.begin(), s.order.end(), [&](int a, int b) {
+      double sa = s.self[std::size_t(a)], sb = s.self[std::size_t(b)];
+      return sa != sb ? sa > sb : a < b;
+    });
+    // Where each interval's nodes start in Y's level (nodes are sorted by interval).
+    const int intervals = 1 << r;
+    s.y_interval_begin.assign(std::size_t(intervals) + 1, ye);
+    for (int n = ye - 1; n >= yb; --n) s.y_interval_begin[gy.nodes[std::size_t(n)].interval] = n;
+    for (int k = intervals - 1; k >= 0; --k)
+      s.y_interval_begin[std::size_t(k)] =
+          std::min(s.y_interval_begin[std::size_t(k)], s.y_interval_begin[std::size_t(k) + 1]);
+    if (w.tung_rule) {
+      neighbour_parents(X, xb, xe, s.x_parents);
+      neighbour_parents(Y, yb, ye, s.y_parents);
+    }
+    for (int m : s.order) {
+      const int pg = X.parent_group(m);
+      if (pg == -1) continue;  // parent unmatched: the subtree stays unmatched
       const ArgNode& nm = gx.nodes[std::size_t(m)];
-      if (X.parent_group(m) == -1) continue;  // parent unmatched: the subtree stays unmatched
       int best = -1;
-      double best_loss = 0, best_sim = 0;
-      // Y's nodes of one level are sorted by interval: scan only nm's interval.
-      auto first =
-          std::lower_bound(gy.nodes.begin() + yb, gy.nodes.begin() + ye, nm.interval,
-                           [](const ArgNode& n, std::uint16_t k) { return n.interval < k; });
-      for (int n = int(first - gy.nodes.begin());
-           n < ye && gy.nodes[std::size_t(n)].interval == nm.interval; ++n) {
-        if (!candidate(X, Y, m, n, w)) continue;
-        double loss = node_loss(nm, gy.nodes[std::size_t(n)], gx.levels(), w);
-        double sim = node_sim(nm, gy.nodes[std::size_t(n)], w);
-        if (best < 0 || loss < best_loss || (loss == best_loss && sim > best_sim))
-          best = n, best_loss = loss, best_sim = sim;
+      double best_loss = 0, best_sim = -1;
+      // Only Y's nodes of nm's interval can be candidates.
+      const int y_end = s.y_interval_begin[std::size_t(nm.interval) + 1];
+      for (int n = s.y_interval_begin[nm.interval]; n < y_end; ++n) {
+        if (!candidate(X, Y, m, n, pg)) continue;
+        if (w.tung_rule &&
+            !neighbours_agree(s.x_parents[std::size_t(m - xb)], s.y_parents[std::size_t(n - yb)]))
+          continue;
+        const double loss = node_loss(nm, gy.nodes[std::size_t(n)], gx.levels(), w);
+        if (best >= 0 && loss > best_loss) continue;
+        // Equal losses are settled by the larger sim, computed only then.
+        if (best >= 0 && loss == best_loss) {
+          if (best_sim < 0) best_sim = node_sim(nm, gy.nodes[std::size_t(best)], w);
+          const double sim = node_sim(nm, gy.nodes[std::size_t(n)], w);
+          if (sim <= best_sim) continue;
+          best_sim = sim;
+        } else {
+          best_sim = -1;
+        }
+        best = n, best_loss = loss;
       }
       if (best < 0) continue;
-      const int gid = int(groups.size());
-      groups.push_back({r, {m}, {best}, best_loss});
+      const int gid = int(s.groups.size());
+      s.groups.push_back({r, m, best, best_loss});
       X.group[std::size_t(m)] = gid;
       Y.group[std::size_t(best)] = gid;
       if (X.label[std::size_t(m)] == 0) {
@@ -166,19 +230,47 @@ std::vector<MatchGroup> match_graphs(const ArgGraph& gx, const ArgGraph& gy, con
         ++next_label;
       }
     }
-    extend_groups(X, Y, groups, xb, xe, true, w);
-    extend_groups(Y, X, groups, yb, ye, false, w);
-    for (std::size_t k = level_first_group; k < groups.size(); ++k) {
-      for (int m : groups[k].x) X.group[std::size_t(m)] = int(k);
-      for (int n : groups[k].y) Y.group[std::size_t(n)] = int(k);
+    s.extra_x.clear(), s.extra_y.clear();
+    extend_groups(X, Y, s.groups, first_group, xb, xe, true, w, s.extra_x);
+    extend_groups(Y, X, s.groups, first_group, yb, ye, false, w, s.extra_y);
+    for (auto [gid, u] : s.extra_x) X.group[std::size_t(u)] = gid;
+    for (auto [gid, u] : s.extra_y) Y.group[std::size_t(u)] = gid;
+    // sim of each group of this level; groups with extra members compare summed attributes.
+    const bool any_extra = !s.extra_x.empty() || !s.extra_y.empty();
+    for (int k = first_group; k < int(s.groups.size()); ++k) {
+      const Founded& g = s.groups[std::size_t(k)];
+      double sim;
+      bool grown = false;
+      if (any_extra)
+        for (auto& e : s.extra_x) grown |= e.first == k;
+      if (any_extra)
+        for (auto& e : s.extra_y) grown |= e.first == k;
+      if (!grown) {
+        sim = node_sim(gx.nodes[std::size_t(g.x)], gy.nodes[std::size_t(g.y)], w);
+      } else {
+        NodeMass mx, my;
+        mx.add(gx.nodes[std::size_t(g.x)]), my.add(gy.nodes[std::size_t(g.y)]);
+        for (auto& e : s.extra_x)
+          if (e.first == k) mx.add(gx.nodes[std::size_t(e.second)]);
+        for (auto& e : s.extra_y)
+          if (e.first == k) my.add(gy.nodes[std::size_t(e.second)]);
+        sim = node_sim(mx, my, w);
+      }
+      numerator += sim;
+      if (group_sim) group_sim->push_back(sim);
+    }
+    if (groups_out) {
+      all_extra_x.insert(all_extra_x.end(), s.extra_x.begin(), s.extra_x.end());
+      all_extra_y.insert(all_extra_y.end(), s.extra_y.begin(), s.extra_y.end());
     }
   }
-  // Canonical order: by level, then smallest x node.
-  for (auto& g : groups) std::sort(g.x.begin(), g.x.end()), std::sort(g.y.begin(), g.y.end());
-  std::sort(groups.begin(), groups.end(), [](const MatchGroup& a, const MatchGroup& b) {
-    return a.level != b.level ? a.level < b.level : a.x.front() < b.x.front();
-  });
-  return groups;
+  if (groups_out) {
+    groups_out->clear();
+    for (const Founded& g : s.groups) groups_out->push_back({g.level, {g.x}, {g.y}, g.loss});
+    for (auto [gid, u] : all_extra_x) (*groups_out)[std::size_t(gid)].x.push_back(u);
+    for (auto [gid, u] : all_extra_y) (*groups_out)[std::size_t(gid)].y.push_back(u);
+  }
+  return numerator;
 }
 
 }  // namespace arg

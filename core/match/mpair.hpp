@@ -29,7 +29,14 @@ struct MatchGroup {
 //     n are matched, at least one such parent of m is matched to one of n (Tung and Schmitt).
 // Then each still unmatched node whose parent is matched joins the group of a matched node
 // of the same interval and parent, when there is one (least loss first).
-// Groups come back sorted by (level, smallest x node).
-std::vector<MatchGroup> match_graphs(const ArgGraph& x, const ArgGraph& y, const Weights& weights);
+// Returns the sum of the groups' sims (summed attributes of the members on each side), the
+// numerator of SIM. When given, `groups` receives the groups in the order they were founded
+// (level by level) and `group_sim` each group's sim.
+double match_graphs(const ArgGraph& x, const ArgGraph& y, const Weights& weights,
+                    std::vector<MatchGroup>* groups = nullptr,
+                    std::vector<double>* group_sim = nullptr);
+
+// sim(m, m) without the histogram loops: every histogram of a node sums to its area.
+double node_self_sim(const ArgNode& n, const Weights& weights);
 
 }  // namespace arg

@@ -28,8 +28,7 @@ constexpr Field kFields[] = {
 };
 
 bool try_preset(std::string_view name, Weights& w) {
-  Weights arg;  // the defaults are the paper's section 6 values plus our feature weights
-  arg.lambda_1 = 0.2f, arg.lambda_2 = 0.2f, arg.lambda_3 = 0.1f, arg.lambda_4 = 0.1f;
+  const Weights arg;  // the defaults: see weights.hpp
   if (name == "arg") {
     w = arg;
   } else if (name == "mrg") {  // Hilaga et al.: topology only, equal weights
@@ -44,7 +43,7 @@ bool try_preset(std::string_view name, Weights& w) {
     w.lambda_4 = 0;
   } else if (name == "colour" || name == "color") {  // appearance first
     w = arg;
-    w.lambda_4 = 1.0f;
+    w.lambda_4 = 5.0f;
   } else {
     return false;
   }

@@ -6,6 +6,9 @@
 
 namespace arg {
 
+// The defaults are the `arg` preset: the paper's section 6 loss and sim weights, and feature
+// weights chosen on SHREC 2007 (docs/BENCHMARKS.md): curvature and cords carry most of the
+// class information, relative volume a little; colour counts as much as a and l together.
 struct Weights {
   // loss(m, n): alpha_l|a-a'| + beta_l|l-l'| + gamma_l|r-r'| + delta_l|theta-theta'| +
   // eps_l|phi-phi'|
@@ -13,7 +16,7 @@ struct Weights {
   // sim(m, n): alpha_s min(a) + beta_s min(l) + lambda_1 min(v) + lambda_2 min(cords)
   //            + lambda_3 min(curvature) + lambda_4 min(colour)
   float alpha_s = 0.65f, beta_s = 0.35f;
-  float lambda_1 = 0, lambda_2 = 0, lambda_3 = 0, lambda_4 = 0;
+  float lambda_1 = 0.3f, lambda_2 = 1.0f, lambda_3 = 3.0f, lambda_4 = 1.0f;
   bool l2 = false;        // squared differences in the loss instead of absolute ones
   bool tung_rule = true;  // Tung and Schmitt's extra consistency rule (off for Hilaga's MRG)
 };
