@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "common/limits.hpp"
 #include "mesh/mesh.hpp"
@@ -23,19 +24,26 @@ struct ReadOptions {
   // Optional texture image (PNG, JPEG, TGA, ...) for formats that keep it outside the mesh (OBJ).
   std::string_view texture;
   StopRequested stop;
+  // The format, when the caller knows it; Unknown means detect it from the content.
+  MeshFormat format = MeshFormat::Unknown;
 };
 
 // What the reader saw and did, for `argtool info` and error reports.
 struct ReadReport {
   MeshFormat format = MeshFormat::Unknown;
   std::size_t vertices_read = 0;
-  std::size_t faces_read = 0;            // polygons as stored in the file
-  std::size_t polygons_triangulated = 0; // faces with more than three corners
-  std::string colour_source = "none";    // "texture", "vertex", "face" or "none"
+  std::size_t faces_read = 0;             // polygons as stored in the file
+  std::size_t polygons_triangulated = 0;  // faces with more than three corners
+  std::string colour_source = "none";     // "texture", "vertex", "face", "material" or "none"
+  std::string variant;                    // e.g. "binary_big_endian", "COFF", "ascii"
+  std::size_t triangles = 0;              // rows of the returned mesh's F
+  std::size_t faces_skipped = 0;          // faces with fewer than three distinct corners
+  std::vector<std::string> warnings;      // what was ignored, e.g. an unusable texture
 };
 
 // Parses `bytes` into a triangle mesh with per-triangle colour when the input has any.
 // Throws InputError (naming format and line/offset) or LimitError.
-Mesh read_mesh(std::string_view bytes, const ReadOptions& options = {}, ReadReport* report = nullptr);
+Mesh read_mesh(std::string_view bytes, const ReadOptions& options = {},
+               ReadReport* report = nullptr);
 
 }  // namespace arg

@@ -14,7 +14,7 @@ namespace {
 
 // Farthest point sampling in space, from the vertex farthest from the centre of mass (the
 // origin of a pose-normalised mesh), so the choice does not depend on vertex order.
-std::vector<int> spread_base_points(const Vertices& V, int count) {
+std::vector<int> spread_base_points(const Vertices& V, int count, const StopRequested& stop) {
   const int n = int(V.rows());
   count = std::min(count, n);
   std::vector<int> chosen;
@@ -23,6 +23,7 @@ std::vector<int> spread_base_points(const Vertices& V, int count) {
   for (int v = 1; v < n; ++v)
     if (V.row(v).squaredNorm() > V.row(next).squaredNorm()) next = v;
   while (int(chosen.size()) < count) {
+    check_interrupt(stop);
     chosen.push_back(next);
     int far = 0;
     for (int v = 0; v < n; ++v) {
@@ -63,7 +64,7 @@ std::vector<double> geodesic_integral(const Mesh& mesh, const MeshEdges& edges, 
   SurfaceGraph graph = surface_graph(mesh, edges, 2.0 * target_edge(total_area, 4000.0));
   check_interrupt(stop);
 
-  std::vector<int> base = spread_base_points(mesh.V, base_points);
+  std::vector<int> base = spread_base_points(mesh.V, base_points, stop);
   std::vector<float> dist;
   std::vector<int> nearest;
   shortest_paths(graph, base, dist, &nearest, stop);

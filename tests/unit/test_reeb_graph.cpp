@@ -149,3 +149,16 @@ TEST(Serialisation, EveryCorruptedByteIsRejectedOrHarmless) {
   for (std::size_t cut : {std::size_t(0), std::size_t(10), bytes.size() / 2, bytes.size() - 1})
     EXPECT_THROW(deserialize_arg(bytes.substr(0, cut)), InputError);
 }
+
+TEST(Build, SameBytesWhateverTheThreadCount) {
+  Mesh m = test::torus(2, 0.6, 90, 36);
+  BuildOptions one, four;
+  four.threads = 4;
+  EXPECT_EQ(serialize_arg(build_arg(m, one)), serialize_arg(build_arg(m, four)));
+}
+
+TEST(Build, StopsWhenAskedTo) {
+  int polls = 0;
+  StopRequested stop = [&] { return ++polls > 3; };
+  EXPECT_THROW(build_arg(test::torus(2, 0.6, 200, 80), BuildOptions{}, stop), Interrupted);
+}

@@ -46,7 +46,9 @@ TEST(Similarity, IsExactlySymmetricAndWithinZeroAndOne) {
         EXPECT_EQ(ab, ba) << i << " " << j;
         EXPECT_GE(ab, 0.0);
         EXPECT_LE(ab, 1.0);
-        if (i != j) EXPECT_GT(ab, 0.0) << i << " " << j;
+        if (i != j) {
+          EXPECT_GT(ab, 0.0) << i << " " << j;
+        }
       }
 }
 

@@ -163,7 +163,7 @@ const bool registered = argtool::register_command(
       app.add_option("--cache", a->cache, "folder caching built ARGs between runs");
       app.add_option("--json", a->json, "write the scores as JSON (curves go to OUT.curves.json)");
       app.add_option("--plot", a->plot, "write the precision-recall curves as SVG");
-      argtool::add_build_flags(app, a->options);
+      argtool::add_build_flags(app, a->options, false);
       return [a] {
         auto t0 = std::chrono::steady_clock::now();
         if (a->methods.empty()) a->methods = {"arg"};

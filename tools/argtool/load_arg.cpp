@@ -27,7 +27,7 @@ LoadedArg load_arg(const std::string& path, const arg::BuildOptions& options,
   return out;
 }
 
-void add_build_flags(CLI::App& app, arg::BuildOptions& options) {
+void add_build_flags(CLI::App& app, arg::BuildOptions& options, bool with_threads) {
   app.add_option("--levels", options.levels, "finest level n (2^n intervals of mu)")
       ->check(CLI::Range(1, arg::kMaxLevels));
   app.add_option_function<std::string>(
@@ -39,6 +39,7 @@ void add_build_flags(CLI::App& app, arg::BuildOptions& options) {
       ->check(CLI::IsMember({"geodesic", "height", "centroid"}));
   app.add_option("--base-points", options.base_points, "base points of the geodesic integral")
       ->check(CLI::Range(8, 4096));
+  if (!with_threads) return;
   app.add_option("--threads", options.threads, "threads for mu (never changes the result)")
       ->check(CLI::Range(1, 256));
 }

@@ -21,7 +21,8 @@ struct LoadedArg {
 LoadedArg load_arg(const std::string& path, const arg::BuildOptions& options = {},
                    const std::string& texture_path = "");
 
-// Adds --levels, --mu and --base-points to a subcommand, writing into `options`.
-void add_build_flags(CLI::App& app, arg::BuildOptions& options);
+// Adds --levels, --mu and --base-points (and --threads unless the subcommand has its own)
+// to a subcommand, writing into `options`.
+void add_build_flags(CLI::App& app, arg::BuildOptions& options, bool with_threads = true);
 
 }  // namespace argtool

@@ -1,0 +1,110 @@
+// Decoding texture images from memory with OpenImageIO, without touching the file system.
+#include <cstring>
+#include <string>
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include "common/errors.hpp"
+#include "io/image.hpp"
+
+namespace arg {
+
+namespace {
+
+// OpenImageIO plugin names; the format is chosen from the content, never from a file name.
+const char* sniff(std::string_view b) {
+  auto starts = [&](std::string_view magic) { return b.substr(0, magic.size()) == magic; };
+  if (starts("\x89PNG\r\n\x1a\n")) return "png";
+  if (starts("\xFF\xD8\xFF")) return "jpeg";
+  if (starts("BM") && b.size() > 26) return "bmp";
+  // TGA has no magic number: check the header fields that have only a few legal values.
+  if (b.size() >= 18) {
+    const auto u = [&](std::size_t i) { return static_cast<unsigned char>(b[i]); };
+    const unsigned type = u(2), colour_map = u(1), bits = u(16);
+    const bool type_ok =
+        type == 1 || type == 2 || type == 3 || type == 9 || type == 10 || type == 11;
+    const bool bits_ok = bits == 8 || bits == 15 || bits == 16 || bits == 24 || bits == 32;
+    if (colour_map <= 1 && type_ok && bits_ok) return "targa";
+  }
+  return nullptr;
+}
+
+[[noreturn]] void fail(const std::string& what) {
+  throw InputError("image: " + what);
+}
+
+// OpenImageIO 2.4's PNG reader leaks its error message whenever libpng long-jumps out of a read
+// past the end of the data, so check first that every chunk lies inside the data up to IEND.
+void check_png_chunks(std::string_view b) {
+  std::size_t at = 8;
+  for (;;) {
+    if (b.size() - at < 12) fail("png: truncated data (no IEND chunk)");
+    const auto* p = reinterpret_cast<const unsigned char*>(b.data() + at);
+    const std::uint32_t length =
+        std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | p[3];
+    if (length > b.size() - at - 12) {
+      fail("png: the chunk at byte offset " + std::to_string(at) +
+           " runs past the end of the data");
+    }
+    const bool end = b.substr(at + 4, 4) == "IEND";
+    at += 12 + std::size_t(length);
+    if (end) return;
+  }
+}
+
+}  // namespace
+
+Image decode_image(std::string_view bytes, const Limits& limits) {
+  if (bytes.size() > limits.max_input_bytes) {
+    throw LimitError("image: " + std::to_string(bytes.size()) + " bytes, more than " +
+                     std::to_string(limits.max_input_bytes));
+  }
+  const char* format = sniff(bytes);
+  if (!format) fail("not a PNG, JPEG, TGA or BMP image");
+  if (std::string_view(format) == "png") check_png_chunks(bytes);
+  auto input = OIIO::ImageInput::create(format);
+  if (!input) fail(std::string("no OpenImageIO reader for ") + format + ": " + OIIO::geterror());
+  // Without I/O proxy support OpenImageIO would open the "file name" below from disk.
+  if (!input->supports("ioproxy"))
+    fail(std::string("the ") + format + " reader cannot read memory");
+  OIIO::Filesystem::IOMemReader proxy(bytes.data(), bytes.size());
+  input->set_ioproxy(&proxy);
+  input->threads(1);
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);  // keep colour as stored under transparency
+  void* proxy_pointer = &proxy;
+  config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy_pointer);
+  OIIO::ImageSpec spec;
+  if (!input->open(std::string("/nonexistent/in-memory.") + format, spec, config)) {
+    fail(std::string(format) + ": " + input->geterror());
+  }
+  if (spec.width <= 0 || spec.height <= 0 || spec.depth != 1 || spec.nchannels <= 0) {
+    fail(std::string(format) + ": unsupported image dimensions");
+  }
+  const std::uint64_t pixels = std::uint64_t(spec.width) * std::uint64_t(spec.height);
+  if (pixels > limits.max_image_pixels) {
+    throw LimitError("image: " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                     " pixels, more than " + std::to_string(limits.max_image_pixels));
+  }
+  const int channels = spec.nchannels >= 3 ? 3 : 1;
+  std::vector<std::uint8_t> pixels_read(pixels * std::size_t(channels));
+  if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pixels_read.data())) {
+    fail(std::string(format) + ": " + input->geterror());
+  }
+  input->close();
+  Image image;
+  image.width = spec.width;
+  image.height = spec.height;
+  if (channels == 3) {
+    image.rgb = std::move(pixels_read);
+  } else {
+    image.rgb.resize(3 * pixels);
+    for (std::size_t i = 0; i < pixels; ++i) {
+      image.rgb[3 * i] = image.rgb[3 * i + 1] = image.rgb[3 * i + 2] = pixels_read[i];
+    }
+  }
+  return image;
+}
+
+}  // namespace arg

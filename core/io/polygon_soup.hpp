@@ -1,0 +1,86 @@
+// The polygon soup every mesh reader fills before triangulation, and the builder that checks it.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "common/limits.hpp"
+
+namespace arg::io {
+
+// Vertices and polygons as the file stores them, with whatever colour or texture coordinates it
+// carries. Optional per-element arrays are either empty or full length, NaN meaning "not given".
+struct PolygonSoup {
+  std::vector<double> xyz;                 // 3 per vertex
+  std::vector<int> corners;                // the corners of all faces, one face after the other
+  std::vector<std::size_t> face_begin{0};  // face f owns corners[face_begin[f], face_begin[f+1])
+  std::vector<float> vertex_rgb;           // 3 per vertex, in [0,1]
+  std::vector<float> face_rgb;             // 3 per face, in [0,1]
+  std::vector<float> vertex_uv;            // 2 per vertex
+  std::vector<float> corner_uv;            // 2 per corner
+  // What face_rgb stands for when the mesh takes its colour from it ("face", or "texture",
+  // "vertex", "material" when a reader computed per-face colour itself, as the GLB reader does).
+  std::string face_colour_source = "face";
+  std::size_t faces_seen = 0;     // faces in the file, including skipped ones
+  std::size_t faces_skipped = 0;  // faces with fewer than three corners
+
+  std::size_t vertex_count() const { return xyz.size() / 3; }
+  std::size_t face_count() const { return face_begin.size() - 1; }
+};
+
+// Appends to a PolygonSoup while enforcing the Limits, finite coordinates and (optionally at once)
+// valid corner indices. Its errors name the format and, through the locator, the line or offset.
+class SoupBuilder {
+ public:
+  using Locate = std::function<std::string()>;
+
+  SoupBuilder(PolygonSoup& soup, std::string format, const Limits& limits,
+              const StopRequested& stop);
+
+  // Where the reader is now ("line 12", "byte offset 3400"); empty if unknown.
+  void set_locator(Locate locate) { locate_ = std::move(locate); }
+  // When true, corner indices are checked against the vertices read so far (formats whose
+  // vertices come before their faces); otherwise check_indices() does it at the end.
+  void set_immediate_index_check(bool on) { immediate_index_check_ = on; }
+
+  int add_vertex(double x, double y, double z);
+  // A vertex whose coordinates follow through set_vertex (OpenMesh's PLY reader does that).
+  int add_vertex_unset();
+  void set_vertex(int v, double x, double y, double z);
+  // Returns the face index, or -1 when the face has fewer than three corners and is skipped.
+  int add_face(const int* indices, std::size_t count);
+  void set_vertex_colour(int v, float r, float g, float b);
+  void set_face_colour(int f, float r, float g, float b);
+  void set_vertex_uv(int v, float s, float t);
+  // Texture coordinates for the corners of face f (2 floats each); ignored unless one per corner.
+  void set_corner_uvs(int f, const float* uv, std::size_t count);
+
+  // Throws InputError naming the first face whose corner is not a vertex.
+  void check_indices() const;
+
+  std::string where() const;
+  [[noreturn]] void fail(const std::string& message) const;
+  [[noreturn]] void fail_limit(const std::string& message) const;
+  const std::string& format() const { return format_; }
+  const Limits& limits() const { return limits_; }
+  PolygonSoup& soup() { return soup_; }
+  void poll();
+
+ private:
+  PolygonSoup& soup_;
+  std::string format_;
+  Limits limits_;
+  const StopRequested& stop_;
+  Locate locate_;
+  bool immediate_index_check_ = true;
+  std::size_t triangles_ = 0;
+  std::size_t ticks_ = 0;
+};
+
+// Throws InputError "<format>: <where>: <message>" (where may be empty).
+[[noreturn]] void throw_input_error(const std::string& format, const std::string& where,
+                                    const std::string& message);
+
+}  // namespace arg::io

@@ -1,0 +1,90 @@
+// An OpenMesh importer that records what a reader sees into a PolygonSoup, keeping every face.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+
+#include <OpenMesh/Core/IO/importer/BaseImporter.hh>
+
+#include "io/polygon_soup.hpp"
+
+namespace arg::io {
+
+// OpenMesh's own PolyMesh importer drops faces that would make the mesh non-manifold; this one
+// keeps them all (the pipeline cleans meshes itself). It never allocates from declared counts:
+// reserve() only reports them to `on_declared`, which may throw.
+class SoupImporter : public OpenMesh::IO::BaseImporter {
+ public:
+  using Declared = std::function<void(std::size_t vertices, std::size_t faces)>;
+
+  explicit SoupImporter(SoupBuilder& builder) : builder_(builder) {}
+
+  void on_declared(Declared callback) { on_declared_ = std::move(callback); }
+  std::size_t declared_vertices() const { return declared_vertices_; }
+  std::size_t declared_faces() const { return declared_faces_; }
+  bool saw_declaration() const { return saw_declaration_; }
+
+  OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3f& p) override;
+  OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3d& p) override;
+  OpenMesh::VertexHandle add_vertex() override;
+  OpenMesh::HalfedgeHandle add_edge(OpenMesh::VertexHandle, OpenMesh::VertexHandle) override {
+    return OpenMesh::HalfedgeHandle();
+  }
+  OpenMesh::FaceHandle add_face(const VHandles& indices) override;
+  OpenMesh::FaceHandle add_face(OpenMesh::HalfedgeHandle) override {
+    return OpenMesh::FaceHandle();
+  }
+  void add_face_texcoords(OpenMesh::FaceHandle fh, OpenMesh::VertexHandle,
+                          const std::vector<OpenMesh::Vec2f>& uv) override;
+  void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
+                          const std::vector<OpenMesh::Vec3f>&) override {}
+  void set_face_texindex(OpenMesh::FaceHandle, int) override {}
+  void set_point(OpenMesh::VertexHandle vh, const OpenMesh::Vec3f& p) override;
+  void set_halfedge(OpenMesh::VertexHandle, OpenMesh::HalfedgeHandle) override {}
+  void set_normal(OpenMesh::VertexHandle, const OpenMesh::Vec3f&) override {}
+  void set_normal(OpenMesh::VertexHandle, const OpenMesh::Vec3d&) override {}
+  void set_color(OpenMesh::VertexHandle vh, const OpenMesh::Vec3uc& c) override;
+  void set_color(OpenMesh::VertexHandle vh, const OpenMesh::Vec4uc& c) override;
+  void set_color(OpenMesh::VertexHandle vh, const OpenMesh::Vec3f& c) override;
+  void set_color(OpenMesh::VertexHandle vh, const OpenMesh::Vec4f& c) override;
+  void set_texcoord(OpenMesh::VertexHandle vh, const OpenMesh::Vec2f& t) override;
+  void set_status(OpenMesh::VertexHandle, const OpenMesh::Attributes::StatusInfo&) override {}
+  void set_next(OpenMesh::HalfedgeHandle, OpenMesh::HalfedgeHandle) override {}
+  void set_face(OpenMesh::HalfedgeHandle, OpenMesh::FaceHandle) override {}
+  void request_face_texcoords2D() override {}
+  void set_texcoord(OpenMesh::HalfedgeHandle, const OpenMesh::Vec2f&) override {}
+  void set_texcoord(OpenMesh::VertexHandle, const OpenMesh::Vec3f&) override {}
+  void set_texcoord(OpenMesh::HalfedgeHandle, const OpenMesh::Vec3f&) override {}
+  void set_status(OpenMesh::HalfedgeHandle, const OpenMesh::Attributes::StatusInfo&) override {}
+  void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec3uc&) override {}
+  void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec4uc&) override {}
+  void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec3f&) override {}
+  void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec4f&) override {}
+  void set_status(OpenMesh::EdgeHandle, const OpenMesh::Attributes::StatusInfo&) override {}
+  void set_normal(OpenMesh::FaceHandle, const OpenMesh::Vec3f&) override {}
+  void set_normal(OpenMesh::FaceHandle, const OpenMesh::Vec3d&) override {}
+  void set_color(OpenMesh::FaceHandle fh, const OpenMesh::Vec3uc& c) override;
+  void set_color(OpenMesh::FaceHandle fh, const OpenMesh::Vec4uc& c) override;
+  void set_color(OpenMesh::FaceHandle fh, const OpenMesh::Vec3f& c) override;
+  void set_color(OpenMesh::FaceHandle fh, const OpenMesh::Vec4f& c) override;
+  void set_status(OpenMesh::FaceHandle, const OpenMesh::Attributes::StatusInfo&) override {}
+  void add_texture_information(int, std::string) override {}
+
+  // Declared counts are untrusted: report them, allocate nothing.
+  void reserve(unsigned int vertices, unsigned int edges, unsigned int faces) override;
+
+  size_t n_vertices() const override { return builder_.soup().vertex_count(); }
+  size_t n_faces() const override { return builder_.soup().face_count(); }
+  size_t n_edges() const override { return 0; }
+
+ private:
+  SoupBuilder& builder_;
+  Declared on_declared_;
+  std::size_t declared_vertices_ = 0;
+  std::size_t declared_faces_ = 0;
+  bool saw_declaration_ = false;
+  std::vector<int> scratch_;
+  std::vector<float> uv_scratch_;
+};
+
+}  // namespace arg::io

@@ -1,0 +1,338 @@
+// Tests of reading GLB: primitives, node transforms, colour sources and hostile files.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "common/errors.hpp"
+#include "io/read_mesh.hpp"
+#include "test_io_support.hpp"
+
+namespace arg {
+namespace {
+
+using test_io::Bytes;
+
+constexpr int kUByte = 5121, kUShort = 5123, kFloat = 5126;
+
+// Assembles the JSON and BIN chunks of a GLB.
+class Gltf {
+ public:
+  int view(const std::string& bytes) {
+    while (bin_.size() % 4) bin_.push_back('\0');
+    views_.push_back("{\"buffer\":0,\"byteOffset\":" + std::to_string(bin_.size()) +
+                     ",\"byteLength\":" + std::to_string(bytes.size()) + "}");
+    bin_ += bytes;
+    return int(views_.size()) - 1;
+  }
+  int accessor(const std::string& bytes, int component, std::size_t count, const char* type,
+               bool normalized = false) {
+    const int v = view(bytes);
+    accessors_.push_back("{\"bufferView\":" + std::to_string(v) +
+                         ",\"componentType\":" + std::to_string(component) +
+                         ",\"count\":" + std::to_string(count) + ",\"type\":\"" + type + "\"" +
+                         (normalized ? ",\"normalized\":true" : "") + "}");
+    return int(accessors_.size()) - 1;
+  }
+  // `rest`: the meshes, nodes, scenes, materials... members of the JSON object.
+  std::string glb(const std::string& rest) const {
+    std::string json = "{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":" +
+                       std::to_string(bin_.size()) + "}],\"bufferViews\":[" + join(views_) +
+                       "],\"accessors\":[" + join(accessors_) + "]," + rest + "}";
+    return pack(json, bin_);
+  }
+  static std::string pack(std::string json, std::string bin) {
+    while (json.size() % 4) json += ' ';
+    while (bin.size() % 4) bin += '\0';
+    Bytes b;
+    b.text("glTF").u32le(2).u32le(
+        std::uint32_t(12 + 8 + json.size() + (bin.empty() ? 0 : 8 + bin.size())));
+    b.u32le(std::uint32_t(json.size())).u32le(0x4E4F534A).text(json);
+    if (!bin.empty()) b.u32le(std::uint32_t(bin.size())).u32le(0x004E4942).text(bin);
+    return b.str();
+  }
+
+ private:
+  static std::string join(const std::vector<std::string>& items) {
+    std::string s;
+    for (const auto& i : items) s += (s.empty() ? "" : ",") + i;
+    return s;
+  }
+  std::string bin_;
+  std::vector<std::string> views_, accessors_;
+};
+
+std::string floats(const std::vector<double>& values) {
+  Bytes b;
+  for (double v : values) b.f32le(float(v));
+  return b.str();
+}
+
+std::vector<double> cube_positions() {
+  std::vector<double> p;
+  for (const auto& v : test_io::cube_vertices()) p.insert(p.end(), v.begin(), v.end());
+  return p;
+}
+
+std::string cube_indices_ushort() {
+  Bytes b;
+  for (const auto& t : test_io::cube_triangles()) {
+    for (int k : t) b.u16le(std::uint16_t(k));
+  }
+  return b.str();
+}
+
+// The indexed cube under the given nodes ("nodes" and "scenes" members).
+std::string cube_glb(const std::string& nodes_and_scenes, const std::string& primitive_extra = "",
+                     Gltf* g = nullptr) {
+  Gltf local;
+  Gltf& gltf = g ? *g : local;
+  const int pos = gltf.accessor(floats(cube_positions()), kFloat, 8, "VEC3");
+  const int idx = gltf.accessor(cube_indices_ushort(), kUShort, 36, "SCALAR");
+  return gltf.glb(
+      "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
+      "},\"indices\":" + std::to_string(idx) + primitive_extra + "}]}]," + nodes_and_scenes);
+}
+
+const std::string kOneNode = "\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}],\"scene\":0";
+
+std::string error_of(const std::string& bytes) {
+  try {
+    read_mesh(bytes);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no InputError)";
+}
+
+TEST(ReadGlb, TheIndexedCubeReadsAsTheOffCube) {
+  ReadReport report;
+  const Mesh mesh = read_mesh(cube_glb(kOneNode), {}, &report);
+  test_io::expect_same_shape(read_mesh(test_io::cube_off()), mesh);
+  EXPECT_EQ(report.format, MeshFormat::Glb);
+  EXPECT_EQ(report.variant, "glTF 2.0 binary");
+  EXPECT_EQ(report.colour_source, "none");
+  EXPECT_FALSE(mesh.has_colour());
+}
+
+TEST(ReadGlb, NonIndexedPrimitivesAsInFox) {
+  std::vector<double> p;
+  const auto& v = test_io::cube_vertices();
+  for (const auto& t : test_io::cube_triangles()) {
+    for (int k : t) p.insert(p.end(), v[std::size_t(k)].begin(), v[std::size_t(k)].end());
+  }
+  Gltf g;
+  const int pos = g.accessor(floats(p), kFloat, 36, "VEC3");
+  const Mesh mesh = read_mesh(g.glb("\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":" +
+                                    std::to_string(pos) + "}}]}]," + kOneNode));
+  EXPECT_EQ(mesh.V.rows(), 36);
+  test_io::expect_same_shape(read_mesh(test_io::cube_off()), mesh);
+}
+
+TEST(ReadGlb, NodeTransformsPlaceTheMesh) {
+  // Translation and scale: the cube [10,12] x [0,2] x [0,2].
+  Mesh mesh =
+      read_mesh(cube_glb("\"nodes\":[{\"mesh\":0,\"translation\":[10,0,0],\"scale\":[2,2,2]}],"
+                         "\"scenes\":[{\"nodes\":[0]}]"));
+  EXPECT_NEAR(mesh.V.col(0).minCoeff(), 10, 1e-9);
+  EXPECT_NEAR(mesh.V.col(0).maxCoeff(), 12, 1e-9);
+  EXPECT_NEAR(test_io::mesh_area(mesh), 24, 1e-9);
+  EXPECT_NEAR(test_io::mesh_volume(mesh), 8, 1e-9);
+  // The same as a column-major matrix, under a parent that moves it up by 5.
+  mesh =
+      read_mesh(cube_glb("\"nodes\":[{\"children\":[1],\"translation\":[0,5,0]},"
+                         "{\"mesh\":0,\"matrix\":[2,0,0,0, 0,2,0,0, 0,0,2,0, "
+                         "10,0,0,1]}],\"scenes\":[{\"nodes\":[0]}]"));
+  EXPECT_NEAR(mesh.V.col(0).minCoeff(), 10, 1e-9);
+  EXPECT_NEAR(mesh.V.col(1).minCoeff(), 5, 1e-9);
+  EXPECT_NEAR(mesh.V.col(1).maxCoeff(), 7, 1e-9);
+  // A quarter turn about z keeps the volume; a mirror keeps it positive by flipping the winding.
+  mesh =
+      read_mesh(cube_glb("\"nodes\":[{\"mesh\":0,\"rotation\":[0,0,0.70710678,0.70710678]}],"
+                         "\"scenes\":[{\"nodes\":[0]}]"));
+  EXPECT_NEAR(mesh.V.col(0).minCoeff(), -1, 1e-6);
+  EXPECT_NEAR(test_io::mesh_volume(mesh), 1, 1e-6);
+  mesh = read_mesh(
+      cube_glb("\"nodes\":[{\"mesh\":0,\"scale\":[-1,1,1]}],\"scenes\":[{\"nodes\":[0]}]"));
+  EXPECT_NEAR(test_io::mesh_volume(mesh), 1, 1e-9);
+  // Two nodes sharing the mesh: two cubes.
+  mesh =
+      read_mesh(cube_glb("\"nodes\":[{\"mesh\":0},{\"mesh\":0,\"translation\":[3,0,0]}],"
+                         "\"scenes\":[{\"nodes\":[0,1]}]"));
+  EXPECT_EQ(mesh.F.rows(), 24);
+}
+
+TEST(ReadGlb, StripsFansAndByteIndices) {
+  Gltf g;
+  const int pos = g.accessor(floats({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}), kFloat, 4, "VEC3");
+  Bytes strip;
+  strip.u8(0).u8(1).u8(3).u8(2);
+  const int s = g.accessor(strip.str(), kUByte, 4, "SCALAR");
+  Bytes fan;
+  fan.u8(0).u8(1).u8(2).u8(3);
+  const int f = g.accessor(fan.str(), kUByte, 4, "SCALAR");
+  const std::string p = "{\"attributes\":{\"POSITION\":" + std::to_string(pos) + "},\"indices\":";
+  const Mesh mesh = read_mesh(g.glb("\"meshes\":[{\"primitives\":[" + p + std::to_string(s) +
+                                    ",\"mode\":5}," + p + std::to_string(f) + ",\"mode\":6}," + p +
+                                    std::to_string(f) + ",\"mode\":1}]}]," + kOneNode));
+  EXPECT_EQ(mesh.F.rows(), 4);
+  EXPECT_NEAR(test_io::mesh_area(mesh), 2, 1e-9);
+}
+
+// One triangle near the top of the texture and one near the bottom.
+std::string textured_glb(const std::string& sampler, const std::string& factor) {
+  const std::string png = test_io::encode_image("png", 4, 4, [](int, int y) {
+    return y < 2 ? std::array<std::uint8_t, 3>{255, 0, 0} : std::array<std::uint8_t, 3>{0, 0, 255};
+  });
+  Gltf g;
+  const int pos =
+      g.accessor(floats({0, 0, 0, 1, 0, 0, 0, 1, 0, 5, 0, 0, 6, 0, 0, 5, 1, 0}), kFloat, 6, "VEC3");
+  // glTF: v = 0 is the top row of the image.
+  const int uv = g.accessor(floats({0.3, 0.2, 0.6, 0.2, 0.4, 0.3, 0.3, 0.8, 0.6, 0.8, 0.4, 0.7}),
+                            kFloat, 6, "VEC2");
+  const int image = g.view(png);
+  return g.glb("\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
+               ",\"TEXCOORD_0\":" + std::to_string(uv) + "},\"material\":0}]}]," + kOneNode +
+               ",\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":0}" +
+               factor + "}}],\"textures\":[{\"source\":0,\"sampler\":0}],\"samplers\":[" + sampler +
+               "],\"images\":[{\"bufferView\":" + std::to_string(image) +
+               ",\"mimeType\":\"image/png\"}]");
+}
+
+TEST(ReadGlb, BaseColourTextureSampledWithVZeroAtTheTop) {
+  ReadReport report;
+  Mesh mesh = read_mesh(textured_glb("{}", ""), {}, &report);
+  ASSERT_TRUE(mesh.has_colour());
+  EXPECT_EQ(report.colour_source, "texture");
+  EXPECT_NEAR(mesh.C(0, 0), 1, 1e-6);  // top: red
+  EXPECT_NEAR(mesh.C(0, 2), 0, 1e-6);
+  EXPECT_NEAR(mesh.C(1, 0), 0, 1e-6);  // bottom: blue
+  EXPECT_NEAR(mesh.C(1, 2), 1, 1e-6);
+  // The factor multiplies the texture.
+  mesh = read_mesh(textured_glb("{}", ",\"baseColorFactor\":[0.5,1,1,1]"));
+  EXPECT_NEAR(mesh.C(0, 0), 0.5, 1e-6);
+}
+
+TEST(ReadGlb, VertexColoursAndMaterialColours) {
+  Gltf g;
+  const int pos = g.accessor(floats({0, 0, 0, 1, 0, 0, 0, 1, 0}), kFloat, 3, "VEC3");
+  Bytes rgba;
+  for (int i = 0; i < 3; ++i) rgba.u8(255).u8(0).u8(0).u8(255);
+  const int col = g.accessor(rgba.str(), kUByte, 3, "VEC4", true);
+  ReadReport report;
+  Mesh mesh = read_mesh(
+      g.glb("\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
+            ",\"COLOR_0\":" + std::to_string(col) + "}}]}]," + kOneNode),
+      {}, &report);
+  ASSERT_TRUE(mesh.has_colour());
+  EXPECT_EQ(report.colour_source, "vertex");
+  EXPECT_NEAR(mesh.C(0, 0), 1, 1e-6);
+  mesh = read_mesh(
+      cube_glb(
+          kOneNode +
+              ",\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.5,0.25,1,1]}}]",
+          ",\"material\":0"),
+      {}, &report);
+  ASSERT_TRUE(mesh.has_colour());
+  EXPECT_EQ(report.colour_source, "material");
+  EXPECT_NEAR(mesh.C(5, 1), 0.25, 1e-6);
+}
+
+TEST(ReadGlb, AnUnusableTextureIsAWarningNotAnError) {
+  const std::string external = cube_glb(
+      kOneNode +
+          ",\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":0}}}],"
+          "\"textures\":[{\"source\":0}],\"images\":[{\"uri\":\"/etc/passwd\"}]",
+      ",\"material\":0");
+  ReadReport report;
+  const Mesh mesh = read_mesh(external, {}, &report);
+  EXPECT_EQ(mesh.F.rows(), 12);
+  EXPECT_FALSE(report.warnings.empty());
+}
+
+TEST(ReadGlb, HostileNodeGraphsAreInputErrors) {
+  EXPECT_NE(error_of(cube_glb("\"nodes\":[{\"mesh\":0,\"children\":[1]},{\"children\":[0]}],"
+                              "\"scenes\":[{\"nodes\":[0]}]"))
+                .find("twice"),
+            std::string::npos);
+  std::string chain = "\"nodes\":[";
+  for (int i = 0; i < 100; ++i) chain += "{\"children\":[" + std::to_string(i + 1) + "]},";
+  chain += "{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}]";
+  EXPECT_NE(error_of(cube_glb(chain)).find("deeper"), std::string::npos);
+  EXPECT_NE(
+      error_of(cube_glb("\"nodes\":[{\"mesh\":3}],\"scenes\":[{\"nodes\":[0]}]")).find("mesh 3"),
+      std::string::npos);
+  EXPECT_NE(error_of(cube_glb("\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}],\"scene\":4"))
+                .find("scene"),
+            std::string::npos);
+}
+
+TEST(ReadGlb, HostileBuffersAndAccessorsAreInputErrors) {
+  Gltf g;
+  const int pos = g.accessor(floats(cube_positions()), kFloat, 8, "VEC3");
+  const int big = g.accessor(floats(cube_positions()), kFloat, 9, "VEC3");  // one too many
+  const int idx = g.accessor(cube_indices_ushort(), kUShort, 36, "SCALAR");
+  Bytes bad_index;
+  bad_index.u16le(0).u16le(1).u16le(8);
+  const int bad = g.accessor(bad_index.str(), kUShort, 3, "SCALAR");
+  auto prim = [&](int p, int i) {
+    return g.glb("\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":" + std::to_string(p) +
+                 "},\"indices\":" + std::to_string(i) + "}]}]," + kOneNode);
+  };
+  EXPECT_EQ(read_mesh(prim(pos, idx)).F.rows(), 12);
+  EXPECT_NE(error_of(prim(big, idx)).find("run past"), std::string::npos)
+      << error_of(prim(big, idx));
+  EXPECT_NE(error_of(prim(pos, bad)).find("8"), std::string::npos);
+  // Buffers: an external file, and a second buffer claiming the BIN chunk.
+  EXPECT_NE(error_of(Gltf::pack("{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":4,"
+                                "\"uri\":\"/etc/passwd\"}]}",
+                                ""))
+                .find("external"),
+            std::string::npos);
+  EXPECT_NE(error_of(Gltf::pack("{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":4},{"
+                                "\"byteLength\":4}]}",
+                                "abcd"))
+                .find("buffer 1"),
+            std::string::npos);
+  EXPECT_NE(
+      error_of(Gltf::pack("{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":4}],"
+                          "\"bufferViews\":[{\"buffer\":0,\"byteOffset\":2,\"byteLength\":4}]}",
+                          "abcd"))
+          .find("buffer view 0"),
+      std::string::npos);
+  // JSON: invalid, and nested deep enough to exhaust a recursive parser.
+  EXPECT_NE(error_of(Gltf::pack("{\"asset\":", "")).find("JSON"), std::string::npos);
+  const std::string deep =
+      "{\"asset\":{\"version\":\"2.0\"},\"extras\":" + std::string(100000, '[') +
+      std::string(100000, ']') + "}";
+  EXPECT_NE(error_of(Gltf::pack(deep, "")).find("nested"), std::string::npos);
+}
+
+TEST(ReadGlb, BadContainersAreInputErrorsNamingTheOffset) {
+  const std::string good = cube_glb(kOneNode);
+  for (std::size_t n = 0; n < good.size(); ++n) {
+    EXPECT_THROW(read_mesh(good.substr(0, n)), InputError) << "prefix " << n;
+  }
+  std::string version = good;
+  version[4] = 1;
+  EXPECT_NE(error_of(version).find("GLB: byte offset 4"), std::string::npos);
+  std::string length = good;
+  length[10] = 0x7f;
+  EXPECT_NE(error_of(length).find("truncated"), std::string::npos);
+}
+
+TEST(ReadGlb, RandomCorruptionGivesTypedErrorsOnly) {
+  test_io::expect_only_typed_errors(cube_glb(kOneNode), 13, 400);
+  test_io::expect_only_typed_errors(textured_glb("{\"wrapS\":33071}", ""), 14, 400);
+}
+
+TEST(ReadGlb, LimitsApply) {
+  ReadOptions options;
+  options.limits.max_vertices = 7;
+  EXPECT_THROW(read_mesh(cube_glb(kOneNode), options), LimitError);
+  options.limits.max_vertices = 8;
+  options.limits.max_triangles = 11;
+  EXPECT_THROW(read_mesh(cube_glb(kOneNode), options), LimitError);
+}
+
+}  // namespace
+}  // namespace arg

@@ -1,0 +1,138 @@
+// Tests of decoding texture images from memory and of sampling them.
+#include <gtest/gtest.h>
+
+#include "common/errors.hpp"
+#include "io/image.hpp"
+#include "io/texture_sampling.hpp"
+#include "test_io_support.hpp"
+
+namespace arg {
+namespace {
+
+using test_io::Bytes;
+
+std::array<std::uint8_t, 3> pixel(const Image& image, int x, int y) {
+  const std::size_t i = 3 * (std::size_t(y) * std::size_t(image.width) + std::size_t(x));
+  return {image.rgb[i], image.rgb[i + 1], image.rgb[i + 2]};
+}
+
+TEST(IoImage, DecodesPngFromMemory) {
+  const std::string png = test_io::encode_image("png", 3, 2, [](int x, int y) {
+    return std::array<std::uint8_t, 3>{std::uint8_t(100 * x), std::uint8_t(200 * y), 7};
+  });
+  const Image image = decode_image(png, {});
+  ASSERT_EQ(image.width, 3);
+  ASSERT_EQ(image.height, 2);
+  EXPECT_EQ(pixel(image, 2, 1), (std::array<std::uint8_t, 3>{200, 200, 7}));
+  EXPECT_EQ(pixel(image, 0, 0), (std::array<std::uint8_t, 3>{0, 0, 7}));
+}
+
+TEST(IoImage, DecodesJpegFromMemory) {
+  const std::string jpeg = test_io::encode_image("jpeg", 16, 16, [](int, int) {
+    return std::array<std::uint8_t, 3>{200, 100, 50};
+  });
+  ASSERT_FALSE(jpeg.empty());
+  const Image image = decode_image(jpeg, {});
+  EXPECT_EQ(image.width, 16);
+  EXPECT_NEAR(pixel(image, 8, 8)[0], 200, 4);
+  EXPECT_NEAR(pixel(image, 8, 8)[2], 50, 4);
+}
+
+// A 2x2 run-length encoded true-colour TGA stored bottom row first (the TGA default): the
+// bottom row red, the top row one blue and one green pixel.
+std::string rle_tga() {
+  Bytes b;
+  b.u8(0).u8(0).u8(10);                 // no id, no colour map, RLE true colour
+  for (int i = 0; i < 5; ++i) b.u8(0);  // colour map spec
+  b.u16le(0).u16le(0).u16le(2).u16le(2).u8(24).u8(0);
+  b.u8(0x81).u8(0).u8(0).u8(255);                      // run of 2: red (BGR)
+  b.u8(0x01).u8(255).u8(0).u8(0).u8(0).u8(255).u8(0);  // 2 raw: blue, green
+  return b.str();
+}
+
+TEST(IoImage, DecodesRunLengthEncodedTgaWithTheTopRowFirst) {
+  const Image image = decode_image(rle_tga(), {});
+  ASSERT_EQ(image.width, 2);
+  ASSERT_EQ(image.height, 2);
+  EXPECT_EQ(pixel(image, 0, 1), (std::array<std::uint8_t, 3>{255, 0, 0}));
+  EXPECT_EQ(pixel(image, 1, 1), (std::array<std::uint8_t, 3>{255, 0, 0}));
+  EXPECT_EQ(pixel(image, 0, 0), (std::array<std::uint8_t, 3>{0, 0, 255}));
+  EXPECT_EQ(pixel(image, 1, 0), (std::array<std::uint8_t, 3>{0, 255, 0}));
+}
+
+std::uint32_t crc32(const std::string& bytes) {
+  std::uint32_t crc = 0xFFFFFFFFu;
+  for (unsigned char c : bytes) {
+    crc ^= c;
+    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+  }
+  return ~crc;
+}
+
+TEST(IoImage, PixelCountIsCheckedBeforeThePixelsAreRead) {
+  // A valid 1x1 PNG whose header is rewritten to claim 100000 x 100000 pixels (with a correct
+  // checksum): decoding them would need 30 GB; the limit must stop it before.
+  std::string png = test_io::encode_image("png", 1, 1, [](int, int) {
+    return std::array<std::uint8_t, 3>{0, 0, 0};
+  });
+  ASSERT_EQ(png.substr(12, 4), "IHDR");
+  const char side[4] = {0x00, 0x01, char(0x86), char(0xA0)};  // 100000, big endian
+  png.replace(16, 4, side, 4);
+  png.replace(20, 4, side, 4);
+  const std::uint32_t crc = crc32(png.substr(12, 17));
+  const char crc_bytes[4] = {char(crc >> 24), char(crc >> 16), char(crc >> 8), char(crc)};
+  png.replace(29, 4, crc_bytes, 4);
+  EXPECT_THROW(decode_image(png, Limits{}), LimitError);
+  Limits limits;
+  const std::string ok = test_io::encode_image("png", 8, 8, [](int, int) {
+    return std::array<std::uint8_t, 3>{0, 0, 0};
+  });
+  limits.max_image_pixels = 63;
+  EXPECT_THROW(decode_image(ok, limits), LimitError);
+  limits.max_image_pixels = 64;
+  EXPECT_EQ(decode_image(ok, limits).width, 8);
+}
+
+TEST(IoImage, GarbageAndTruncatedImagesAreInputErrors) {
+  EXPECT_THROW(decode_image("", {}), InputError);
+  EXPECT_THROW(decode_image("definitely not an image", {}), InputError);
+  const std::string png = test_io::encode_image("png", 8, 8, [](int x, int) {
+    return std::array<std::uint8_t, 3>{std::uint8_t(x), 0, 0};
+  });
+  for (std::size_t n = 0; n + 12 < png.size(); n += 7) {
+    EXPECT_THROW(decode_image(png.substr(0, n), {}), InputError) << "prefix " << n;
+  }
+  const std::string tga = rle_tga();
+  for (std::size_t n = 18; n < tga.size(); ++n) {
+    EXPECT_THROW(decode_image(tga.substr(0, n), {}), InputError) << "tga prefix " << n;
+  }
+}
+
+TEST(IoImage, SamplingWrapsAndFlipsAsAsked) {
+  Image image;
+  image.width = 2;
+  image.height = 1;
+  image.rgb = {255, 0, 0, 0, 0, 255};  // red | blue
+  io::TextureSampler sampler;
+  EXPECT_NEAR(io::sample_texture(image, 0.25, 0.5, sampler)[0], 1, 1e-6);
+  EXPECT_NEAR(io::sample_texture(image, 0.75, 0.5, sampler)[2], 1, 1e-6);
+  EXPECT_NEAR(io::sample_texture(image, 1.25, 0.5, sampler)[0], 1, 1e-6);  // repeat
+  EXPECT_NEAR(io::sample_texture(image, -0.75, 0.5, sampler)[0], 1, 1e-6);
+  EXPECT_NEAR(io::sample_texture(image, 0.5, 0.5, sampler)[0], 0.5, 1e-6);  // bilinear
+  sampler.wrap_s = io::TextureWrap::ClampToEdge;
+  EXPECT_NEAR(io::sample_texture(image, 7.0, 0.5, sampler)[2], 1, 1e-6);
+  sampler.wrap_s = io::TextureWrap::MirroredRepeat;
+  EXPECT_NEAR(io::sample_texture(image, 1.25, 0.5, sampler)[2], 1, 1e-6);
+  Image column;
+  column.width = 1;
+  column.height = 2;
+  column.rgb = {255, 0, 0, 0, 0, 255};  // top red, bottom blue
+  io::TextureSampler obj;               // v = 0 at the bottom
+  EXPECT_NEAR(io::sample_texture(column, 0.5, 0.75, obj)[0], 1, 1e-6);
+  io::TextureSampler gltf;
+  gltf.v_origin_bottom = false;
+  EXPECT_NEAR(io::sample_texture(column, 0.5, 0.75, gltf)[2], 1, 1e-6);
+}
+
+}  // namespace
+}  // namespace arg
