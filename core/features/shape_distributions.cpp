@@ -22,11 +22,11 @@ std::vector<double> area_cdf(const Mesh& mesh) {
   return cdf;
 }
 
-Eigen::Vector3d sample_point(const Mesh& mesh, const std::vector<double>& cdf, Random& rng) {
-  double x = rng.uniform() * cdf.back();
+Eigen::Vector3d sample_point(const Mesh& mesh, const std::vector<double>& cdf, SeededRandom& rng) {
+  double x = rng.unit() * cdf.back();
   std::size_t f = std::size_t(std::upper_bound(cdf.begin(), cdf.end(), x) - cdf.begin());
   f = std::min(f, cdf.size() - 1);
-  double r1 = std::sqrt(rng.uniform()), r2 = rng.uniform();
+  double r1 = std::sqrt(rng.unit()), r2 = rng.unit();
   Eigen::Vector3d a = mesh.V.row(mesh.F(Eigen::Index(f), 0)).transpose(),
                   b = mesh.V.row(mesh.F(Eigen::Index(f), 1)).transpose(),
                   c = mesh.V.row(mesh.F(Eigen::Index(f), 2)).transpose();
@@ -47,7 +47,7 @@ std::vector<float> d2_histogram(const Mesh& mesh, int bins, int pairs, double ma
   if (mesh.F.rows() == 0) return h;
   std::vector<double> cdf = area_cdf(mesh);
   if (!(cdf.back() > 0)) return h;
-  Random rng(0x0A5D2D2ull);
+  SeededRandom rng(0x0A5D2D2ull);
   for (int i = 0; i < pairs; ++i) {
     Eigen::Vector3d p = sample_point(mesh, cdf, rng), q = sample_point(mesh, cdf, rng);
     int b = int((p - q).norm() / max_distance * bins);

@@ -15,6 +15,7 @@
 #include "eval/label_file.hpp"
 #include "eval/pr_plot.hpp"
 #include "eval/retrieval_metrics.hpp"
+#include "eval_models.hpp"
 #include "graph/serialize.hpp"
 #include "load_arg.hpp"
 #include "match/similarity.hpp"
@@ -31,6 +32,8 @@ struct EvalArgs {
   arg::BuildOptions options;
 };
 
+using argtool::Model;
+
 double median(std::vector<double> x) {
   if (x.empty()) return 0;
   std::sort(x.begin(), x.end());
@@ -39,56 +42,6 @@ double median(std::vector<double> x) {
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
-// Per-model inputs shared by all methods of one run.
-struct Model {
-  std::string error;
-  arg::ArgGraph graph;
-  std::vector<float> d2, cords;
-  double build_ms = 0, d2_ms = 0, cords_ms = 0;
-};
-
-std::string cache_path(const std::string& dir, const std::string& mesh,
-                       const arg::BuildOptions& o) {
-  std::uint64_t key = arg::fnv1a_64(
-      mesh, arg::fnv1a_64(arg::format_build_options(o) +
-                          " builder=" + std::to_string(arg::current_builder_version())));
-  char name[40];
-  std::snprintf(name, sizeof name, "%016llx.arg", static_cast<unsigned long long>(key));
-  return (fs::path(dir) / name).string();
-}
-
-void prepare_model(Model& m, const std::string& path, const EvalArgs& a, bool need_arg,
-                   bool need_d2, bool need_cords) {
-  try {
-    std::string bytes = argtool::read_file_bytes(path);
-    if (need_arg) {
-      std::string cached = a.cache.empty() ? "" : cache_path(a.cache, bytes, a.options);
-      std::string arg_bytes;
-      if (!cached.empty() && fs::exists(cached)) {
-        arg_bytes = argtool::read_file_bytes(cached);
-      } else {
-        auto t0 = std::chrono::steady_clock::now();
-        arg_bytes = arg::build_arg_bytes(bytes, {}, a.options);
-        m.build_ms = ms_since(t0);
-        if (!cached.empty()) argtool::write_file_bytes(cached, arg_bytes);
-      }
-      m.graph = arg::deserialize_arg(arg_bytes);
-    }
-    if (need_d2 || need_cords) {
-      arg::Mesh mesh = arg::read_mesh(bytes);
-      auto t0 = std::chrono::steady_clock::now();
-      if (need_d2)
-        m.d2 = arg::baseline_descriptor(mesh, arg::BaselineKind::D2), m.d2_ms = ms_since(t0);
-      t0 = std::chrono::steady_clock::now();
-      if (need_cords)
-        m.cords = arg::baseline_descriptor(mesh, arg::BaselineKind::Cords),
-        m.cords_ms = ms_since(t0);
-    }
-  } catch (const std::exception& e) {
-    m.error = e.what();
-  }
 }
 
 struct MethodResult {
@@ -176,8 +129,8 @@ const bool registered = argtool::register_command(
         const bool need_arg = uses("arg") || uses("mrg");
         std::vector<Model> models(set.models.size());
         argtool::run_with_progress("build", models.size(), a->threads, [&](std::size_t i) {
-          prepare_model(models[i], (root / set.models[i].path).string(), *a, need_arg, uses("d2"),
-                        uses("cords"));
+          argtool::prepare_model(models[i], (root / set.models[i].path).string(), a->options,
+                                 a->cache, need_arg, uses("d2"), uses("cords"));
         });
         const double prepare_s = ms_since(t0) / 1000.0;
         nlohmann::json out = nlohmann::json::array(), curves = nlohmann::json::array();

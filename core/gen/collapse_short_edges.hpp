@@ -1,0 +1,21 @@
+// Removing the slivers marching leaves behind by collapsing short edges, topology kept.
+#pragma once
+
+#include "mesh/mesh.hpp"
+
+namespace arg::gen {
+
+struct CollapseOptions {
+  double min_length = 0;   // shorter edges are collapsed wherever allowed
+  double flat_length = 0;  // shorter edges are collapsed where the surface around them is flat:
+  double flat_cosine = 1;  // every triangle around within this cosine of their mean normal
+};
+
+// Collapses short edges (shortest first, ties by vertex index, so the result is deterministic)
+// into their midpoints. An edge is only collapsed when the link condition holds, which keeps a
+// closed manifold closed, manifold and of the same genus, and when no surrounding triangle
+// would flip, turn by more than 60 degrees or lose its area. Expects a closed manifold mesh;
+// colours are not carried (call before painting).
+Mesh collapse_short_edges(const Mesh& mesh, const CollapseOptions& options);
+
+}  // namespace arg::gen

@@ -1,0 +1,74 @@
+// Every real mesh of ../shared/data builds into a valid ARG (skipped when the data is absent).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "build/build_arg.hpp"
+#include "graph/serialize.hpp"
+#include "match/similarity.hpp"
+
+namespace fs = std::filesystem;
+using namespace arg;
+
+namespace {
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The texture an OBJ of the shared data set comes with, by its folder's convention.
+std::string texture_for(const fs::path& mesh) {
+  if (mesh.extension() != ".obj") return {};
+  for (const char* suffix : {"_diffuse.tga", ".png"}) {
+    fs::path t = mesh.parent_path() / (mesh.stem().string() + suffix);
+    if (fs::exists(t)) return slurp(t);
+  }
+  return {};
+}
+
+}  // namespace
+
+TEST(RealData, EveryMeshOfTheSharedDataBuildsAndMatchesItself) {
+  const fs::path root = ARG_SHARED_DATA;
+  if (!fs::exists(root)) GTEST_SKIP() << "no shared data at " << root << ": skipping";
+  std::vector<fs::path> meshes;
+  for (const auto& entry : fs::recursive_directory_iterator(root)) {
+    const std::string ext = entry.path().extension().string();
+    if (ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl" || ext == ".glb")
+      meshes.push_back(entry.path());
+  }
+  std::sort(meshes.begin(), meshes.end());
+  ASSERT_FALSE(meshes.empty());
+  std::mutex lock;
+  std::vector<std::string> failures;
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t i = next++; i < meshes.size(); i = next++) {
+      try {
+        std::string bytes = build_arg_bytes(slurp(meshes[i]), texture_for(meshes[i]));
+        ArgGraph g = deserialize_arg(bytes);
+        if (arg_similarity(g, g) != 0.0) throw std::runtime_error("SIM(M, M) is not 0");
+      } catch (const std::exception& e) {
+        std::lock_guard<std::mutex> guard(lock);
+        failures.push_back(meshes[i].string() + ": " + e.what());
+      }
+    }
+  };
+  std::thread other(worker);
+  worker();
+  other.join();
+  for (const auto& f : failures) ADD_FAILURE() << f;
+  RecordProperty("meshes", int(meshes.size()));
+  std::cout << "built " << meshes.size() - failures.size() << " of " << meshes.size()
+            << " meshes\n";
+}

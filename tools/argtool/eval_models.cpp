@@ -1,0 +1,72 @@
+// Preparing labelled models for the quality harness, with an on-disk cache of built ARGs.
+#include "eval_models.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include "build/build_arg.hpp"
+#include "command_registry.hpp"
+#include "common/hash.hpp"
+#include "eval/baseline_descriptors.hpp"
+#include "graph/serialize.hpp"
+#include "io/read_mesh.hpp"
+
+namespace fs = std::filesystem;
+
+namespace argtool {
+
+namespace {
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+namespace {
+
+std::string cache_path(const std::string& dir, const std::string& mesh,
+                       const arg::BuildOptions& o) {
+  std::uint64_t key = arg::fnv1a_64(
+      mesh, arg::fnv1a_64(arg::format_build_options(o) +
+                          " builder=" + std::to_string(arg::current_builder_version())));
+  char name[40];
+  std::snprintf(name, sizeof name, "%016llx.arg", static_cast<unsigned long long>(key));
+  return (fs::path(dir) / name).string();
+}
+}  // namespace
+
+void prepare_model(Model& m, const std::string& path, const arg::BuildOptions& options,
+                   const std::string& cache_dir, bool need_arg, bool need_d2, bool need_cords) {
+  try {
+    std::string bytes = argtool::read_file_bytes(path);
+    if (need_arg) {
+      std::string cached = cache_dir.empty() ? "" : cache_path(cache_dir, bytes, options);
+      std::string arg_bytes;
+      if (!cached.empty() && fs::exists(cached)) {
+        arg_bytes = argtool::read_file_bytes(cached);
+      } else {
+        auto t0 = std::chrono::steady_clock::now();
+        arg_bytes = arg::build_arg_bytes(bytes, {}, options);
+        m.build_ms = ms_since(t0);
+        if (!cached.empty()) argtool::write_file_bytes(cached, arg_bytes);
+      }
+      m.graph = arg::deserialize_arg(arg_bytes);
+    }
+    if (need_d2 || need_cords) {
+      arg::Mesh mesh = arg::read_mesh(bytes);
+      auto t0 = std::chrono::steady_clock::now();
+      if (need_d2)
+        m.d2 = arg::baseline_descriptor(mesh, arg::BaselineKind::D2), m.d2_ms = ms_since(t0);
+      t0 = std::chrono::steady_clock::now();
+      if (need_cords)
+        m.cords = arg::baseline_descriptor(mesh, arg::BaselineKind::Cords),
+        m.cords_ms = ms_since(t0);
+    }
+  } catch (const std::exception& e) {
+    m.error = e.what();
+  }
+}
+
+}  // namespace argtool
