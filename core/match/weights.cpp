@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <utility>
 
 #include "common/errors.hpp"
@@ -124,7 +126,12 @@ std::string format_weights(const Weights& w) {
   std::string out;
   char buf[64];
   for (const Field& f : kFields) {
-    std::snprintf(buf, sizeof buf, "%s=%.9g ", f.name, double(w.*f.member));
+    // The shortest decimal that reads back as the same float: "0.3", not "0.300000012".
+    const float x = w.*f.member;
+    for (int digits = 6; digits <= 9; ++digits) {
+      std::snprintf(buf, sizeof buf, "%s=%.*g ", f.name, digits, double(x));
+      if (std::strtof(std::strchr(buf, '=') + 1, nullptr) == x) break;
+    }
     out += buf;
   }
   out += w.l2 ? "norm=l2 " : "norm=l1 ";
