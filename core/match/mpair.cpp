@@ -231,8 +231,10 @@ double match_graphs(const ArgGraph& gx, const ArgGraph& gy, const Weights& w,
       }
     }
     s.extra_x.clear(), s.extra_y.clear();
-    extend_groups(X, Y, s.groups, first_group, xb, xe, true, w, s.extra_x);
-    extend_groups(Y, X, s.groups, first_group, yb, ye, false, w, s.extra_y);
+    if (w.groups) {
+      extend_groups(X, Y, s.groups, first_group, xb, xe, true, w, s.extra_x);
+      extend_groups(Y, X, s.groups, first_group, yb, ye, false, w, s.extra_y);
+    }
     for (auto [gid, u] : s.extra_x) X.group[std::size_t(u)] = gid;
     for (auto [gid, u] : s.extra_y) Y.group[std::size_t(u)] = gid;
     // sim of each group of this level; groups with extra members compare summed attributes.

@@ -40,6 +40,7 @@ bool try_preset(std::string_view name, Weights& w) {
     w.alpha_s = w.beta_s = 0.5f;
     w.lambda_1 = w.lambda_2 = w.lambda_3 = w.lambda_4 = 0;
     w.tung_rule = false;
+    w.groups = true;
   } else if (name == "shape") {  // geometry and features, colour ignored
     w = arg;
     w.lambda_4 = 0;
@@ -95,6 +96,15 @@ Weights parse_weights(std::string_view text) {
         throw InputError("weights: norm=" + value + " (expected l1 or l2)");
       continue;
     }
+    if (key == "groups") {
+      if (value == "on")
+        w.groups = true;
+      else if (value == "off")
+        w.groups = false;
+      else
+        throw InputError("weights: groups=" + value + " (expected on or off)");
+      continue;
+    }
     if (key == "tung") {
       if (value == "on")
         w.tung_rule = true;
@@ -116,7 +126,7 @@ Weights parse_weights(std::string_view text) {
     if (!known)
       throw InputError("weights: unknown key \"" + key +
                        "\" (expected alpha_l beta_l gamma_l delta_l eps_l alpha_s beta_s "
-                       "lambda_1..lambda_4 norm tung)");
+                       "lambda_1..lambda_4 norm tung groups)");
   }
   validate(w);
   return w;
@@ -136,13 +146,14 @@ std::string format_weights(const Weights& w) {
   }
   out += w.l2 ? "norm=l2 " : "norm=l1 ";
   out += w.tung_rule ? "tung=on" : "tung=off";
+  out += w.groups ? " groups=on" : " groups=off";
   return out;
 }
 
 bool operator==(const Weights& a, const Weights& b) {
   for (const Field& f : kFields)
     if (a.*f.member != b.*f.member) return false;
-  return a.l2 == b.l2 && a.tung_rule == b.tung_rule;
+  return a.l2 == b.l2 && a.tung_rule == b.tung_rule && a.groups == b.groups;
 }
 
 }  // namespace arg

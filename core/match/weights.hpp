@@ -19,6 +19,7 @@ struct Weights {
   float lambda_1 = 0.3f, lambda_2 = 1.0f, lambda_3 = 3.0f, lambda_4 = 1.0f;
   bool l2 = false;        // squared differences in the loss instead of absolute ones
   bool tung_rule = true;  // Tung and Schmitt's extra consistency rule (off for Hilaga's MRG)
+  bool groups = false;    // a node may match a group of nodes of its interval (Hilaga's MRG)
 };
 
 // "arg", "mrg", "shape" or "colour"; throws InputError for another name.
@@ -26,7 +27,7 @@ Weights weights_preset(std::string_view name);
 
 // A preset name, or "key=value" pairs separated by spaces or commas, optionally after a preset
 // ("shape lambda_4=0.1"). Keys: alpha_l beta_l gamma_l delta_l eps_l alpha_s beta_s lambda_1..4
-// norm=l1|l2 tung=on|off. Values finite and >= 0, at least one sim weight positive.
+// norm=l1|l2 tung=on|off groups=on|off. Values finite and >= 0, at least one sim weight positive.
 Weights parse_weights(std::string_view text);
 
 // Canonical text form; parse_weights(format_weights(w)) == w.

@@ -1,0 +1,47 @@
+// Where an ARG's nodes sit on its mesh: 3D barycentres in the aligned frame, and mu per vertex.
+#pragma once
+
+#include <Eigen/Core>
+#include <utility>
+#include <vector>
+
+#include "build/build_options.hpp"
+#include "common/limits.hpp"
+#include "mesh/mesh.hpp"
+
+namespace arg {
+
+// One level of the Reeb graph laid over the surface. Node k here is node k of the same level of
+// the ArgGraph that build_arg makes from the same mesh and options.
+struct NodePlacementLevel {
+  std::vector<Eigen::Vector3d> centre;     // area-weighted barycentre of the node's region
+  std::vector<double> area;                // share of the surface, sums to 1 over the level
+  std::vector<int> interval;               // mu interval at this level
+  std::vector<std::pair<int, int>> edges;  // adjacency (i < j), sorted
+  std::vector<int> parent;                 // node index at the level above; -1 at level 0
+};
+
+struct NodePositions {
+  // The cleaned, pose-normalised mesh: the frame in which the ARG measures its barycentres
+  // (centre of mass at the origin, principal axes on x, y, z, unit RMS radius).
+  Mesh mesh;
+  std::vector<double> mu;                  // mu_N in [0, 1] per vertex of `mesh`
+  std::vector<NodePlacementLevel> levels;  // levels[0] is the coarsest
+  // Which finest node owns each part of a triangle: triangle f has one piece per finest mu
+  // interval from face_first_interval[f], numbered from face_piece_begin[f] (size F + 1).
+  std::vector<int> face_first_interval, face_piece_begin;
+  std::vector<int> piece_node;
+};
+
+// Reruns the geometric part of build_arg (clean, pose, mu, slice, Reeb levels) and keeps what
+// the ARG throws away but a picture needs. The ARG stores barycentres as (r, theta, phi) with
+// theta = atan(y/x), which cannot tell x from -x, so drawings take them from here instead.
+// Throws like build_arg.
+NodePositions node_positions(const Mesh& mesh, const BuildOptions& options = {},
+                             const StopRequested& stop = {});
+
+// The node of `level` that owns the point of triangle `face` where mu is `mu` (for instance
+// the surface seen at a pixel); -1 when face or level is out of range.
+int node_at(const NodePositions& positions, int level, int face, double mu);
+
+}  // namespace arg

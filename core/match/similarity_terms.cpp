@@ -1,0 +1,62 @@
+// Regrouping MatchPair rows into matched groups and summing their attributes term by term.
+#include "match/similarity_terms.hpp"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "match/mpair.hpp"
+#include "match/node_similarity.hpp"
+
+namespace arg {
+
+namespace {
+
+template <std::size_t N>
+double histogram_min(const std::array<float, N>& x, const std::array<float, N>& y) {
+  double s = 0;
+  for (std::size_t k = 0; k < N; ++k) s += std::min(x[k], y[k]);
+  return s;
+}
+
+}  // namespace
+
+SimilarityTerms similarity_terms(const ArgGraph& a, const ArgGraph& b, const Weights& weights,
+                                 const std::vector<MatchPair>& matches) {
+  Weights w = weights;
+  if (!(a.summary.has_colour && b.summary.has_colour)) w.lambda_4 = 0;
+  // Members of each group on each side, as global node indices.
+  std::map<int, std::pair<std::set<int>, std::set<int>>> groups;
+  for (const MatchPair& p : matches) {
+    if (p.level < 0 || p.level > a.levels() || p.level > b.levels()) continue;
+    auto& g = groups[p.group];
+    g.first.insert(int(a.level_begin[std::size_t(p.level)]) + p.a_node);
+    g.second.insert(int(b.level_begin[std::size_t(p.level)]) + p.b_node);
+  }
+  SimilarityTerms t;
+  for (const auto& [id, members] : groups) {
+    NodeMass m, n;
+    for (int i : members.first)
+      if (i >= 0 && std::size_t(i) < a.nodes.size()) m.add(a.nodes[std::size_t(i)]);
+    for (int i : members.second)
+      if (i >= 0 && std::size_t(i) < b.nodes.size()) n.add(b.nodes[std::size_t(i)]);
+    t.a += w.alpha_s * std::min(m.a, n.a);
+    t.l += w.beta_s * std::min(m.l, n.l);
+    if (w.lambda_1 > 0) t.v += w.lambda_1 * std::min(m.v, n.v);
+    if (w.lambda_2 > 0) t.cords += w.lambda_2 * histogram_min(m.cords, n.cords);
+    if (w.lambda_3 > 0)
+      t.curvature +=
+          w.lambda_3 * 0.5 *
+          (histogram_min(m.curv_mean, n.curv_mean) + histogram_min(m.curv_gauss, n.curv_gauss));
+    if (w.lambda_4 > 0) t.colour += w.lambda_4 * histogram_min(m.colour, n.colour) / 3.0;
+  }
+  double self = 0;
+  for (const ArgNode& n : a.nodes) self += node_self_sim(n, w);
+  for (const ArgNode& n : b.nodes) self += node_self_sim(n, w);
+  const double denominator = 0.5 * self;
+  if (!(denominator > 0)) return {};
+  for (double* x : {&t.a, &t.l, &t.v, &t.cords, &t.curvature, &t.colour}) *x /= denominator;
+  return t;
+}
+
+}  // namespace arg

@@ -1,0 +1,26 @@
+// SIM split into the terms of sim (a, l, v, cords, curvature, colour), to explain a score.
+#pragma once
+
+#include <vector>
+
+#include "graph/arg_graph.hpp"
+#include "match/similarity.hpp"
+#include "match/weights.hpp"
+
+namespace arg {
+
+// Each term's weighted sum of minima over the matched groups, divided by SIM's denominator:
+// 1 - SIM = a + l + v + cords + curvature + colour (before SIM's clamp to [0, 1]).
+struct SimilarityTerms {
+  double a = 0, l = 0, v = 0, cords = 0, curvature = 0, colour = 0;
+
+  double total() const { return a + l + v + cords + curvature + colour; }
+};
+
+// Splits the score of `matches` (as filled by arg_similarity(a, b, weights, &matches)) into its
+// terms, with the same weights and the same rule that colour weighs nothing unless both
+// models have colour.
+SimilarityTerms similarity_terms(const ArgGraph& a, const ArgGraph& b, const Weights& weights,
+                                 const std::vector<MatchPair>& matches);
+
+}  // namespace arg
