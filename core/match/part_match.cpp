@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "common/errors.hpp"
+#include "match/mpair.hpp"
+#include "match/node_similarity.hpp"
 #include "match/similarity.hpp"
 #include "match/subgraph.hpp"
 
@@ -10,19 +12,11 @@ namespace arg {
 
 namespace {
 
-// Shape of a node's distributions, independent of its size: the cords and curvature
-// histograms each rescaled to unit mass, compared by the sum of bin-wise minima; in [0, 1].
-double node_shape_similarity(const ArgNode& m, const ArgNode& n) {
-  auto compare = [](const float* x, const float* y, int bins, double mx, double my) {
-    if (!(mx > 0) || !(my > 0)) return 0.0;
-    double s = 0;
-    for (int k = 0; k < bins; ++k) s += std::min(x[k] / mx, y[k] / my);
-    return s;
-  };
-  return (compare(m.cords.data(), n.cords.data(), kCordBins, m.a, n.a) +
-          compare(m.curv_mean.data(), n.curv_mean.data(), kCurvatureBins, m.a, n.a) +
-          compare(m.curv_gauss.data(), n.curv_gauss.data(), kCurvatureBins, m.a, n.a)) /
-         3.0;
+// Step 4 of the paper's scheme: sim(m, n) with the nodes' own attributes (so relative size
+// counts: a handle is not a cup's body), over the larger of the two self-similarities; in [0, 1].
+double node_similarity(const ArgNode& m, const ArgNode& n, const Weights& w) {
+  const double self = std::max(node_self_sim(m, w), node_self_sim(n, w));
+  return self > 0 ? node_sim(m, n, w) / self : 0.0;
 }
 
 // A part is attached to the rest of its model through its neighbours; parts attached
@@ -47,13 +41,19 @@ std::vector<PartMatch> part_match(const ArgGraph& query, int level, int node,
   const int root = int(query.level_begin[std::size_t(level)]) + node;
   const ArgNode& q = query.nodes[std::size_t(root)];
   const ArgGraph part = subgraph(query, root);
+  Weights w = weights;  // colour only when both models have some, as in arg_similarity
+  if (!(query.summary.has_colour && candidate.summary.has_colour)) w.lambda_4 = 0;
   std::vector<PartMatch> out;
   for (int r = std::max(0, level - 1); r <= std::min(candidate.levels(), level + 1); ++r) {
     for (std::uint32_t i = candidate.level_begin[std::size_t(r)];
          i < candidate.level_begin[std::size_t(r) + 1]; ++i) {
       const ArgNode& c = candidate.nodes[i];
-      if (node_shape_similarity(q, c) < threshold || !topologically_consistent(q, c)) continue;
-      double score = arg_similarity(part, subgraph(candidate, int(i)), weights);
+      const double similarity = node_similarity(q, c, w);
+      if (similarity < threshold || !topologically_consistent(q, c)) continue;
+      // The parts' sub-graphs decide (step 6), with the nodes' own similarity as a tie-breaking
+      // half so that of two parts shaped alike the one of the right size ranks first.
+      const double score =
+          0.5 * (arg_similarity(part, subgraph(candidate, int(i)), weights) + (1.0 - similarity));
       out.push_back({r, int(i - candidate.level_begin[std::size_t(r)]), score});
     }
   }

@@ -29,8 +29,12 @@ struct PartMatch {
   double score = 0;  // SIM of the sub-graphs, 0 = same part
 };
 
-// Ranks the candidate's nodes at `level` (and the neighbouring levels) by how well their
-// sub-graphs match the sub-graph of `query` rooted at `node` (index within `level`); best first.
+// Part matching (paper section 5). Candidates are the nodes of `candidate` at `level` and the
+// neighbouring levels whose node similarity to the query node (sim over the larger self-sim,
+// with the nodes' own attributes, so relative size counts) reaches `threshold` and whose
+// number of neighbours differs by at most one. Each is scored by the mean of the SIM of the
+// renormalised sub-graphs below the two nodes and 1 - the node similarity; best (lowest)
+// first. `node` is the query node's index within `level`.
 // Throws InputError when level or node is out of range.
 std::vector<PartMatch> part_match(const ArgGraph& query, int level, int node,
                                   const ArgGraph& candidate, const Weights& weights = {},
