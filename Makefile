@@ -1,0 +1,98 @@
+# arg: the PostgreSQL extension (a PGXS makefile) and the project's top-level targets.
+#
+#   make                     configure CMake once, build the core library, then the extension
+#   make install             install the extension into PostgreSQL 15 (as root, or it uses sudo)
+#   make test                install missing packages, build everything, run every test suite
+#   make demo [MODELS=DIR]   ... then rank a sample catalogue (or DIR's meshes) in a throwaway cluster
+#   make demo-stop           stop the demo's cluster
+#   make installcheck        pg_regress (sql/, expected/) against the server in PGHOST/PGPORT
+#   make distclean           stop the clusters and remove the build tree
+
+BUILD_DIR ?= build
+CMAKE ?= cmake
+CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release $(if $(CI),-DARG_WERROR=ON)
+JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+CORE_LIB := $(BUILD_DIR)/libargcore.a
+PG_CONFIG ?= $(firstword $(wildcard /usr/lib/postgresql/15/bin/pg_config) $(shell command -v pg_config 2>/dev/null))
+SUDO := $(if $(filter 0,$(shell id -u)),,sudo)
+export BUILD_DIR
+
+# The extension ------------------------------------------------------------------------------
+
+EXTVERSION := $(shell sed -n "s/^default_version *= *'\(.*\)'/\1/p" extension/arg.control)
+MODULE_big = arg
+OBJS = $(patsubst %.cpp,%.o,$(wildcard extension/*.cpp))
+# The control file lives in extension/, so install it as DATA rather than through EXTENSION.
+MODULEDIR = extension
+DATA = extension/arg.control $(wildcard extension/arg--*.sql)
+PGFILEDESC = "arg - Augmented Reeb Graphs for 3D shape search"
+
+REGRESS = $(sort $(basename $(notdir $(wildcard sql/*.sql))))
+REGRESS_OPTS = --outputdir=$(BUILD_DIR)/regress
+
+PG_CPPFLAGS = -Icore -I/usr/include/eigen3 -DARG_VERSION='"$(EXTVERSION)"' -D_USE_MATH_DEFINES
+PG_CXXFLAGS = -std=c++17 -Wextra -Wno-unused-parameter -Wno-missing-field-initializers \
+              $(if $(CI),-Werror)
+SHLIB_LINK = $(CORE_LIB) -lOpenMeshCore -lOpenImageIO -lOpenImageIO_Util -pthread -lstdc++
+
+# PGXS's LLVM bitcode rule ignores PG_CXXFLAGS (so no -std=c++17) and JIT inlining gains nothing
+# here: build without bitcode. Track header dependencies so core header changes rebuild the glue.
+override with_llvm := no
+override autodepend := yes
+
+ifneq ($(PG_CONFIG),)
+PGXS := $(shell $(PG_CONFIG) --pgxs)
+include $(PGXS)
+else
+all install installcheck:
+	@echo "pg_config (PostgreSQL 15) not found: run 'make deps' (or 'make test'/'make demo') first" >&2
+	@exit 1
+endif
+
+# The core, built by CMake -------------------------------------------------------------------
+
+$(BUILD_DIR)/CMakeCache.txt:
+	$(CMAKE) -S . -B $(BUILD_DIR) $(CMAKE_FLAGS)
+
+# ARG_NO_CMAKE=1 (used for the sudo install step) takes the library as it is.
+ifneq ($(ARG_NO_CMAKE),1)
+$(CORE_LIB): FORCE | $(BUILD_DIR)/CMakeCache.txt
+	$(CMAKE) --build $(BUILD_DIR) --target argcore -j $(JOBS)
+endif
+
+arg$(DLSUFFIX): $(CORE_LIB)
+
+.PHONY: FORCE
+FORCE:
+
+# Top-level targets --------------------------------------------------------------------------
+
+.PHONY: deps cmake-all build test demo demo-stop distclean
+
+deps:
+	tools/pg/install_deps.sh
+
+# Every CMake target (core, argtool, unit tests, benchmarks), then the extension.
+cmake-all: | $(BUILD_DIR)/CMakeCache.txt
+	$(CMAKE) --build $(BUILD_DIR) -j $(JOBS)
+
+build: cmake-all
+	$(MAKE) --no-print-directory all
+
+# Each step is a new make so that PGXS is read after `deps` has installed PostgreSQL.
+test: deps
+	$(MAKE) --no-print-directory build
+	$(SUDO) $(MAKE) --no-print-directory install ARG_NO_CMAKE=1
+	tests/run_all.sh
+
+demo: deps
+	$(MAKE) --no-print-directory build
+	$(SUDO) $(MAKE) --no-print-directory install ARG_NO_CMAKE=1
+	tools/demo/run.sh $(if $(MODELS),"$(MODELS)")
+
+demo-stop:
+	tools/pg/cluster.sh stop $(BUILD_DIR)/pg-demo
+
+distclean: demo-stop
+	tools/pg/cluster.sh stop $(BUILD_DIR)/pg-test --remove
+	rm -rf $(BUILD_DIR) .deps

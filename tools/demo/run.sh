@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# The demo: a throwaway cluster, a catalogue of models loaded into a table, one ranking query.
+#
+#   tools/demo/run.sh          the sample catalogue made by `argtool gen` (about 40 models)
+#   tools/demo/run.sh DIR      every .off .obj .ply .stl .glb file under DIR instead
+#
+# Environment: BUILD_DIR (default build), QUERY (model_id to rank against, default the first one),
+# DEMO_ROWS (rows to print, default 15), DEMO_PER_CLASS (sample models per class, default 5),
+# DEMO_PROGRESS_EVERY (a progress line per this many models, default 10).
+# The cluster stays up; `make demo-stop` stops it.
+set -euo pipefail
+
+cd "$(dirname "$0")/../.."
+build=${BUILD_DIR:-build}
+pgdir=$build/pg-demo
+work=$build/demo
+models_dir=${1:-}
+mkdir -p "$work"
+work=$(cd "$work" && pwd -P)
+
+# The catalogue: CSV with header model_id,path,class,inventory_no,title,artist,period,material.
+if [[ -z "$models_dir" ]]; then
+  mode=sample
+  rm -rf "$work/models"
+  echo "demo: generating the sample catalogue"
+  "$build/argtool" gen --out "$work/models" --per-class "${DEMO_PER_CLASS:-5}"
+  catalogue=$work/models/catalogue.csv
+  base=$work/models
+else
+  mode=user
+  [[ -d "$models_dir" ]] || { echo "demo: MODELS=$models_dir is not a directory" >&2; exit 1; }
+  base=$(cd "$models_dir" && pwd -P)
+  catalogue=$work/user_catalogue.csv
+  echo "model_id,path,class,inventory_no,title,artist,period,material" >"$catalogue"
+  csv() { local q='"'; printf '"%s"' "${1//$q/$q$q}"; }  # a quoted CSV field
+  n=0
+  while IFS= read -r -d '' file; do
+    name=$(basename "$file")
+    n=$((n + 1))
+    # model_id: the path under DIR without extension; title: the file name without extension.
+    rel=${file#"$base"/}
+    echo "$(csv "${rel%.*}"),$(csv "$file"),,,$(csv "${name%.*}"),,," >>"$catalogue"
+  done < <(find "$base" -type f \( -iname '*.off' -o -iname '*.obj' -o -iname '*.ply' \
+    -o -iname '*.stl' -o -iname '*.glb' \) ! -name $'*\n*' -print0 | sort -z)
+  [[ $n -gt 0 ]] || { echo "demo: no .off .obj .ply .stl or .glb files under $base" >&2; exit 1; }
+  echo "demo: $n mesh files under $base"
+fi
+
+tools/pg/cluster.sh start "$pgdir"
+# shellcheck disable=SC1091
+source "$pgdir/env"
+psql -X -q -d postgres -tAc "SELECT 1 FROM pg_database WHERE datname = 'museum'" | grep -q 1 ||
+  psql -X -q -d postgres -c 'CREATE DATABASE museum'
+
+echo "demo: loading the catalogue into table museum_models (database museum)"
+# For a user's folder, each file that fails is reported on one line by load.sql; psql's own copy
+# of the error goes to a log.
+if [[ $mode == user ]]; then exec 3>"$work/load-errors.log"; else exec 3>&2; fi
+psql -X -q -d museum -v ON_ERROR_STOP=1 -v mode="$mode" -v dir="$base" \
+  -v script="$work/import.sql" -v every="${DEMO_PROGRESS_EVERY:-10}" \
+  -f tools/demo/load.sql <"$catalogue" 2>&3 || {
+  [[ $mode == user ]] && tail -n 5 "$work/load-errors.log" >&2
+  exit 1
+}
+exec 3>&-
+if [[ $(psql -X -q -d museum -tAc 'SELECT count(*) FROM museum_models') -eq 0 ]]; then
+  echo "demo: no model could be loaded" >&2
+  exit 1
+fi
+
+if [[ -n "${QUERY:-}" ]] && [[ -z $(psql -X -q -d museum -v q="$QUERY" -tA \
+  <<<"SELECT 1 FROM museum_models WHERE model_id = :'q'") ]]; then
+  echo "demo: QUERY=$QUERY is not a model_id of the catalogue" >&2
+  exit 1
+fi
+psql -X -q -d museum -v ON_ERROR_STOP=1 -v mode="$mode" -v query="${QUERY:-}" \
+  -v rows="${DEMO_ROWS:-15}" -f tools/demo/rank.sql
+
+cat <<EOF
+
+The demo cluster is still running (data in $pgdir). Connect with:
+  psql -h localhost -p $PGPORT -U postgres museum
+Stop it with: make demo-stop
+EOF

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs the Debian packages the project needs, only when one of them is missing.
+# Runs apt-get update first; uses sudo only when not root. ARG_SKIP_DEPS=1 skips the check.
+set -euo pipefail
+
+packages=(
+  # server, headers for PGXS, contrib, pgTAP and pg_prove
+  postgresql-15 postgresql-server-dev-15 postgresql-contrib postgresql-15-pgtap
+  libtap-parser-sourcehandler-pgtap-perl
+  # core libraries (tinygltf's header needs nlohmann-json and stb, which its package does not pull in)
+  libeigen3-dev libopenmesh-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libopenimageio-dev
+  libcli11-dev
+  # build and test tools
+  cmake g++ make clang-format libgtest-dev libbenchmark-dev
+)
+
+if [[ "${ARG_SKIP_DEPS:-0}" == 1 ]]; then exit 0; fi
+
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
+  [[ "$status" == installed ]] || missing+=("$p")
+done
+
+if [[ ${#missing[@]} -eq 0 ]]; then
+  echo "deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+sudo=()
+if [[ $(id -u) -ne 0 ]]; then
+  command -v sudo >/dev/null || { echo "deps: missing ${missing[*]}; run as root or install sudo" >&2; exit 1; }
+  sudo=(sudo)
+fi
+
+echo "deps: installing ${missing[*]}"
+"${sudo[@]}" apt-get update -q
+"${sudo[@]}" env DEBIAN_FRONTEND=noninteractive \
+  apt-get install -y -q --no-install-recommends "${missing[@]}"
