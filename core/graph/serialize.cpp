@@ -1,7 +1,9 @@
 // Binary and text forms of an ARG: deterministic writer, strict validating reader.
 #include "graph/serialize.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include "common/base64.hpp"
@@ -58,7 +60,7 @@ bool finite(float x) {
 }
 
 // Reads and checks the header; fills graph's scalar parts.
-Header read_header(ByteReader& in, std::string_view bytes, ArgGraph& g) {
+Header read_header(ByteReader& in, std::string_view bytes, ArgGraph& g, bool check_digest) {
   Header h;
   std::string_view magic = in.get_bytes(4);
   if (magic != std::string_view(kMagic, 4)) in.fail("bad magic (not an ARG value)");
@@ -74,7 +76,8 @@ Header read_header(ByteReader& in, std::string_view bytes, ArgGraph& g) {
             std::to_string(bytes.size()) + " bytes");
   h.builder_version = in.get<std::uint32_t>();
   h.digest = in.get<std::uint64_t>();
-  if (h.digest != content_digest(bytes)) in.fail("digest mismatch (corrupted value)");
+  if (check_digest && h.digest != content_digest(bytes))
+    in.fail("digest mismatch (corrupted value)");
   h.levels = in.get<std::uint8_t>();
   h.mu_kind = in.get<std::uint8_t>();
   h.base_points = in.get<std::uint16_t>();
@@ -196,19 +199,38 @@ void check_structure(const ArgGraph& g) {
         if (gap != 1 && gap != -1) fail(at + ": neighbour not in an adjacent interval");
         if (k > 0 && g.adjacency[adj_cursor + k - 1] >= j)
           fail(at + ": neighbours not sorted or repeated");
-        const ArgNode& other = g.nodes[j];
-        bool back = false;
-        for (std::uint32_t q = 0; q < other.adj_count && !back; ++q)
-          back = g.adjacency[other.adj_begin + q] == i;
-        if (!back) fail(at + ": adjacency to " + std::to_string(j) + " is not symmetric");
       }
       adj_cursor += node.adj_count;
     }
   }
   if (child_cursor != g.children.size()) fail("unused entries in the children section");
   if (adj_cursor != g.adjacency.size()) fail("unused entries in the adjacency section");
+  // Symmetry, once every node's neighbour range is known to lie inside the section and be
+  // sorted (a later node's range is not checked yet while an earlier one is walked).
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const ArgNode& node = g.nodes[i];
+    for (std::uint32_t k = 0; k < node.adj_count; ++k) {
+      const std::uint32_t j = g.adjacency[node.adj_begin + k];
+      const auto begin = g.adjacency.begin() + g.nodes[j].adj_begin;
+      if (!std::binary_search(begin, begin + g.nodes[j].adj_count, i))
+        fail("node " + std::to_string(i) + ": adjacency to " + std::to_string(j) +
+             " is not symmetric");
+    }
+  }
   for (std::uint32_t i = g.level_begin[1]; i < n; ++i)
     if (!seen_as_child[i]) fail("node " + std::to_string(i) + " is not a child of its parent");
+}
+
+const bool kLittleEndianHost = [] {
+  const std::uint32_t one = 1;
+  unsigned char first;
+  std::memcpy(&first, &one, 1);
+  return first == 1;
+}();
+static_assert(sizeof(ArgNode) == kNodeSize, "ArgNode records are copied as they are stored");
+
+void copy_section(ByteReader& in, void* to, std::size_t bytes) {
+  if (bytes) std::memcpy(to, in.get_bytes(bytes).data(), bytes);
 }
 
 }  // namespace
@@ -247,23 +269,31 @@ std::string serialize_arg(const ArgGraph& g) {
   return std::move(bytes);
 }
 
-ArgGraph deserialize_arg(std::string_view bytes) {
+ArgGraph deserialize_arg(std::string_view bytes, bool check_digest) {
   if (bytes.size() < kHeaderSize)
     fail("value of " + std::to_string(bytes.size()) + " bytes is shorter than the header (" +
          std::to_string(kHeaderSize) + ")");
   ArgGraph g;
   ByteReader in(bytes, "ARG");
-  Header h = read_header(in, bytes, g);
+  Header h = read_header(in, bytes, g, check_digest);
   g.nodes.resize(h.node_count);
-  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
-    for_each_field(g.nodes[i],
-                   [&](auto& x) { x = in.get<std::remove_reference_t<decltype(x)>>(); });
-    check_node_values(g.nodes[i], i);
-  }
   g.children.resize(h.child_count);
-  for (auto& c : g.children) c = in.get<std::uint32_t>();
   g.adjacency.resize(h.adjacency_count);
-  for (auto& j : g.adjacency) j = in.get<std::uint32_t>();
+  if (kLittleEndianHost) {
+    // The records are stored exactly as they lie in memory here: one copy per section.
+    copy_section(in, g.nodes.data(), g.nodes.size() * kNodeSize);
+    copy_section(in, g.children.data(), g.children.size() * 4);
+    copy_section(in, g.adjacency.data(), g.adjacency.size() * 4);
+  } else {
+    for (ArgNode& node : g.nodes)
+      for_each_field(node, [&](auto& x) { x = in.get<std::remove_reference_t<decltype(x)>>(); });
+    for (auto& c : g.children) c = in.get<std::uint32_t>();
+    for (auto& j : g.adjacency) j = in.get<std::uint32_t>();
+  }
+  // Values out of range cannot make anything read out of bounds; a value that passed the full
+  // check on input only needs the structural one.
+  if (check_digest)
+    for (std::size_t i = 0; i < g.nodes.size(); ++i) check_node_values(g.nodes[i], i);
   check_structure(g);
   g.level_begin.resize(std::size_t(g.levels()) + 2);
   return g;
@@ -277,6 +307,13 @@ std::uint64_t arg_digest(std::string_view bytes) {
   if (bytes.size() < kDigestEnd) fail("value too short for a digest");
   ByteReader in(bytes.substr(kDigestAt, 8), "ARG");
   return in.get<std::uint64_t>();
+}
+
+void reseal_arg_digest(std::string& bytes) {
+  if (bytes.size() < kHeaderSize) fail("value too short for a header");
+  ByteWriter digest;
+  digest.put(content_digest(bytes));
+  bytes.replace(kDigestAt, 8, digest.bytes());
 }
 
 std::string arg_to_text(std::string_view bytes) {

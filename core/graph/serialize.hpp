@@ -16,14 +16,22 @@ inline constexpr std::uint16_t kFormatVersion = 1;
 std::string serialize_arg(const ArgGraph& graph);
 
 // Strict reader: checks sizes, counts, ranges, ordering, links both ways, finiteness and the
-// digest; throws InputError saying what is wrong and at which offset.
-ArgGraph deserialize_arg(std::string_view bytes);
+// digest; throws InputError saying what is wrong and at which offset. `check_digest` false
+// skips only the digest (a pass over every byte), for values already validated on input, such
+// as those a database stores: every index is still checked, so even a corrupted stored value
+// cannot make the reader or the matcher read out of bounds.
+ArgGraph deserialize_arg(std::string_view bytes, bool check_digest = true);
 
 // Only the checks, no copy.
 void validate_arg_bytes(std::string_view bytes);
 
 // 64-bit content digest stored in the header (used for equality, hashing and canonical order).
 std::uint64_t arg_digest(std::string_view bytes);
+
+// Recomputes the digest of `bytes` (a header long at least) in place, so that a value whose
+// other bytes were changed on purpose passes the digest check and reaches the structural
+// checks. For tests and fuzzing only; throws InputError when `bytes` is too short.
+void reseal_arg_digest(std::string& bytes);
 
 // Text form: "arg1:" followed by standard base64 of the binary form.
 std::string arg_to_text(std::string_view bytes);
