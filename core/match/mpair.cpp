@@ -149,15 +149,9 @@ void extend_groups(const Side& side, const Side& other, const std::vector<Founde
 
 }  // namespace
 
-double node_self_sim(const ArgNode& n, const Weights& w) {
-  // Every histogram of a node sums to its area (colour: each channel), so sim(m, m) needs no
-  // bin loop.
-  return (w.alpha_s + w.lambda_2 + w.lambda_3 + w.lambda_4) * double(n.a) + w.beta_s * double(n.l) +
-         w.lambda_1 * double(n.v);
-}
-
 double match_graphs(const ArgGraph& gx, const ArgGraph& gy, const Weights& w,
-                    std::vector<MatchGroup>* groups_out, std::vector<double>* group_sim) {
+                    std::vector<MatchGroup>* groups_out, std::vector<double>* group_sim,
+                    double* self_x) {
   thread_local Scratch s;
   Side& X = s.x;
   Side& Y = s.y;
@@ -166,7 +160,10 @@ double match_graphs(const ArgGraph& gx, const ArgGraph& gy, const Weights& w,
   if (group_sim) group_sim->clear();
   const int levels = std::min(gx.levels(), gy.levels());
   s.self.resize(gx.nodes.size());
-  for (std::size_t m = 0; m < gx.nodes.size(); ++m) s.self[m] = node_self_sim(gx.nodes[m], w);
+  double self_sum = 0;
+  for (std::size_t m = 0; m < gx.nodes.size(); ++m)
+    self_sum += s.self[m] = node_self_sim(gx.nodes[m], w);
+  if (self_x) *self_x = self_sum;
   int next_label = 1;
   double numerator = 0;
   std::vector<std::pair<int, int>> all_extra_x, all_extra_y;  // only filled for groups_out

@@ -34,11 +34,16 @@ struct MatchGroup {
 // Returns the sum of the groups' sims (summed attributes of the members on each side), the
 // numerator of SIM. When given, `groups` receives the groups in the order they were founded
 // (level by level) and `group_sim` each group's sim.
+// `self_x` (optional) receives the sum of sim(m, m) over X's nodes, computed on the way.
 double match_graphs(const ArgGraph& x, const ArgGraph& y, const Weights& weights,
                     std::vector<MatchGroup>* groups = nullptr,
-                    std::vector<double>* group_sim = nullptr);
+                    std::vector<double>* group_sim = nullptr, double* self_x = nullptr);
 
-// sim(m, m) without the histogram loops: every histogram of a node sums to its area.
-double node_self_sim(const ArgNode& n, const Weights& weights);
+// sim(m, m) without the histogram loops: every histogram of a node sums to its area (colour:
+// each of its three channels, counted a third each).
+inline double node_self_sim(const ArgNode& n, const Weights& w) {
+  return (w.alpha_s + w.lambda_2 + w.lambda_3 + w.lambda_4) * double(n.a) + w.beta_s * double(n.l) +
+         w.lambda_1 * double(n.v);
+}
 
 }  // namespace arg

@@ -47,8 +47,9 @@ double similarity_ordered(const ArgGraph& x, const ArgGraph& y, const Weights& w
                           std::vector<MatchPair>* matches, bool swapped) {
   std::vector<MatchGroup> groups;
   std::vector<double> group_sim;
+  double self_x = 0;
   const double numerator =
-      match_graphs(x, y, w, matches ? &groups : nullptr, matches ? &group_sim : nullptr);
+      match_graphs(x, y, w, matches ? &groups : nullptr, matches ? &group_sim : nullptr, &self_x);
   if (matches) {
     matches->clear();
     for (std::size_t k = 0; k < groups.size(); ++k)
@@ -68,7 +69,7 @@ double similarity_ordered(const ArgGraph& x, const ArgGraph& y, const Weights& w
       return p.level != q.level ? p.level < q.level : p.a_node < q.a_node;
     });
   }
-  const double denominator = 0.5 * (self_mass(x, w) + self_mass(y, w));
+  const double denominator = 0.5 * (self_x + self_mass(y, w));
   if (!(denominator > 0)) return 0.0;
   return std::clamp(1.0 - numerator / denominator, 0.0, 1.0);
 }
