@@ -18,7 +18,7 @@ std::string precision_recall_svg(const std::vector<PrCurve>& curves, const std::
   add("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
       "font-family=\"sans-serif\" font-size=\"12\">\n",
       int(left + width + 150), int(top + height + 50));
-  add("<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n");
+  svg += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   std::string escaped;
   for (char c : title)
     escaped += c == '<' ? std::string("&lt;") : c == '&' ? std::string("&amp;") : std::string(1, c);

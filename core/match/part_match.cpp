@@ -16,7 +16,9 @@ namespace {
 // counts: a handle is not a cup's body), over the larger of the two self-similarities; in [0, 1].
 double node_similarity(const ArgNode& m, const ArgNode& n, const Weights& w) {
   const double self = std::max(node_self_sim(m, w), node_self_sim(n, w));
-  return self > 0 ? node_sim(m, n, w) / self : 0.0;
+  // The self-sims come from node areas, the sims from histogram bins that sum to the areas only
+  // up to float rounding: clamp.
+  return self > 0 ? std::clamp(node_sim(m, n, w) / self, 0.0, 1.0) : 0.0;
 }
 
 // A part is attached to the rest of its model through its neighbours; parts attached

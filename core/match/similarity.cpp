@@ -25,7 +25,9 @@ int compare_graphs(const ArgGraph& a, const ArgGraph& b) {
     return c;
   if (int c = std::memcmp(a.nodes.data(), b.nodes.data(), sizeof(ArgNode) * a.nodes.size()))
     return c;
-  if (int c = std::memcmp(a.children.data(), b.children.data(), 4 * a.children.size())) return c;
+  // Equal node records imply equal section sizes; an empty section may have no storage at all.
+  if (!a.children.empty())
+    if (int c = std::memcmp(a.children.data(), b.children.data(), 4 * a.children.size())) return c;
   if (!a.adjacency.empty())
     if (int c = std::memcmp(a.adjacency.data(), b.adjacency.data(), 4 * a.adjacency.size()))
       return c;

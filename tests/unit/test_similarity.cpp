@@ -108,3 +108,11 @@ TEST(Weights, RejectBadTextWithAClearMessage) {
       std::string::npos);
   EXPECT_NE(message("alpha_l=").find("malformed"), std::string::npos);
 }
+
+TEST(PartMatching, AtTheFinestLevelSubGraphsWithoutChildrenCompare) {
+  const ArgGraph& g = shapes()[0];
+  for (const PartMatch& p : part_match(g, g.levels(), 0, g)) {
+    EXPECT_GE(p.score, 0.0);
+    EXPECT_LE(p.score, 1.0);
+  }
+}

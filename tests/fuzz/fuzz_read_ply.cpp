@@ -1,0 +1,12 @@
+// libFuzzer target: read_mesh with the format forced to PLY, checking the mesh it returns.
+#include "fuzz_support.hpp"
+
+namespace arg::fuzz {
+
+inline int fuzz_read_ply(const std::uint8_t* data, std::size_t size) {
+  return fuzz_read_mesh_as(MeshFormat::Ply, data, size);
+}
+
+}  // namespace arg::fuzz
+
+ARG_FUZZ_ENTRY(arg::fuzz::fuzz_read_ply)

@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# Rebuilds the committed seed corpora (tests/fuzz/corpus/<target>/) from the project's own
+# generator and writers (argtool gen/build at low resolution) plus hand-written edge cases
+# (make_seeds.py). Deterministic: running it twice gives the same files.
+#
+#   tests/fuzz/make_corpus.sh            uses $ARGTOOL, else build-fuzz/argtool, else build/argtool
+#
+# The fuzzers never write into this folder: run_fuzz.sh works on a copy.
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+corpus="$here/corpus"
+
+argtool="${ARGTOOL:-}"
+if [[ -z "$argtool" ]]; then
+  for candidate in "$root/build-fuzz/argtool" "$root/build/argtool"; do
+    if [[ -x "$candidate" ]]; then
+      argtool="$candidate"
+      break
+    fi
+  done
+fi
+if [[ -z "$argtool" || ! -x "$argtool" ]]; then
+  echo "make_corpus.sh: no argtool found; build one (cmake --build build --target argtool)" \
+       "or set ARGTOOL" >&2
+  exit 1
+fi
+# An argtool built for fuzzing carries the sanitizers; leaks at exit are not our concern here.
+export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=0}"
+
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+# Small generated models in every format argtool writes (resolution 10: a few hundred triangles).
+classes=(human fourleg octopus torus)
+class_args=()
+for c in "${classes[@]}"; do class_args+=(--class "$c"); done
+for format in off ply stl obj; do
+  "$argtool" gen --out "$work/$format" --per-class 1 --resolution 10 --format "$format" \
+    "${class_args[@]}" > /dev/null
+done
+
+# ARG values of two of them, at a few levels and kinds of mu.
+mkdir -p "$work/arg"
+"$argtool" build --levels 2 --base-points 16 -o "$work/arg/human_l2.arg" \
+  "$work/off/human_00.off" > /dev/null
+"$argtool" build --levels 4 --mu height --base-points 16 -o "$work/arg/fourleg_l4_height.arg" \
+  "$work/ply/fourleg_00.ply" > /dev/null
+"$argtool" build --levels 3 --mu centroid --base-points 16 -o "$work/arg/torus_l3_centroid.arg" \
+  "$work/stl/torus_00.stl" > /dev/null
+
+rm -rf "$corpus"
+mkdir -p "$corpus"
+for format in off ply stl obj; do
+  mkdir -p "$corpus/fuzz_read_$format"
+  for c in "${classes[@]}"; do
+    cp "$work/$format/${c}_00.$format" "$corpus/fuzz_read_$format/gen_${c}.$format"
+  done
+done
+mkdir -p "$corpus/fuzz_build"
+cp "$work/off/human_00.off" "$corpus/fuzz_build/gen_human.off"
+cp "$work/ply/fourleg_00.ply" "$corpus/fuzz_build/gen_fourleg.ply"
+cp "$work/stl/human_00.stl" "$corpus/fuzz_build/gen_human.stl"
+cp "$work/obj/human_00.obj" "$corpus/fuzz_build/gen_human.obj"
+
+python3 "$here/make_seeds.py" "$work" "$corpus"
+
+# A GLB for the build target too, converted above from the generated human.
+cp "$corpus/fuzz_read_glb/gen_human.glb" "$corpus/fuzz_build/gen_human.glb"
+
+echo "corpus: $(find "$corpus" -type f | wc -l) files, $(du -sh "$corpus" | cut -f1)"
