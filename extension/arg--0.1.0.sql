@@ -1,20 +1,33 @@
--- arg 0.1.0: the arg type, building ARGs from meshes, and comparing them.
+-- arg 0.1.0: Augmented Reeb Graphs of 3D meshes, built, compared and inspected in SQL.
+--
+-- Every pure function is IMMUTABLE STRICT PARALLEL SAFE, so it can feed a generated column and
+-- run in parallel plans. COST is in units of cpu_operator_cost, taken as 2.5 us of one core
+-- (cpu_operator_cost = 0.0025 with seq_page_cost = 1 read as 1 ms). Measured per call in the
+-- server (bench/sql_bench.sh: 1,000 generated models at resolution 32, about 7k triangles, on
+-- a shared 2-core machine) and with Google Benchmark (build/arg_bench):
+--   arg_build            24 ms per insert (40 ms for 11k triangles in BM_WholeBuild)  COST 20000
+--   arg_generate_model   20 ms                                                        COST 8000
+--   arg_sim, <~>,        48 us per row of a ranking: detoasting the stored value      COST 20
+--     arg_matches          ~15 us, reading its graph ~7 us, matching 7-27 us
+--   arg_part_match       37 us per candidate (node at level 2; finer levels more)     COST 40
+--   arg_nodes 68 us, arg_svg 57 us, arg_info 41 us                              COST 30, 25, 16
+--   arg_in 250 us, arg_out 200 us (base64 and the full check), arg_recv ~60 us   COST 100, 80, 25
 
 -- complain if script is sourced in psql, rather than via CREATE EXTENSION
 \echo Use "CREATE EXTENSION arg" to load this file. \quit
 
--- The type -----------------------------------------------------------------------------------
+-- The type arg ------------------------------------------------------------------------------
 
 CREATE TYPE arg;
 
 CREATE FUNCTION arg_in(cstring) RETURNS arg
-  AS 'MODULE_PATHNAME', 'arg_in' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE;
+  AS 'MODULE_PATHNAME', 'arg_in' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 100;
 
 CREATE FUNCTION arg_out(arg) RETURNS cstring
-  AS 'MODULE_PATHNAME', 'arg_out' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE;
+  AS 'MODULE_PATHNAME', 'arg_out' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 80;
 
 CREATE FUNCTION arg_recv(internal) RETURNS arg
-  AS 'MODULE_PATHNAME', 'arg_recv' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE;
+  AS 'MODULE_PATHNAME', 'arg_recv' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 25;
 
 CREATE FUNCTION arg_send(arg) RETURNS bytea
   AS 'MODULE_PATHNAME', 'arg_send' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE;
@@ -25,36 +38,154 @@ CREATE TYPE arg (
   RECEIVE = arg_recv,
   SEND = arg_send,
   INTERNALLENGTH = VARIABLE,
-  STORAGE = extended
+  -- Out of line but not compressed, as pgvector does: ranking reads every row's value, and
+  -- reading a value uncompressed costs less than half of what pglz decompression does
+  -- (measured: 36 against 84 us per row of ORDER BY descr <~> q). Costs twice the space,
+  -- little next to the meshes. ALTER TABLE ... SET STORAGE EXTENDED gives compression back.
+  STORAGE = external
 );
 
 COMMENT ON TYPE arg IS
   'Augmented Reeb Graph of a 3D mesh (text form: arg1: followed by base64 of the binary form)';
 
--- Building -----------------------------------------------------------------------------------
+-- Equality (byte equality of the deterministic binary form), hashing (of the digest the header
+-- stores) and a canonical order (digest, size, bytes: a total order that says nothing about
+-- shape; <~> does), so that =, DISTINCT, count(DISTINCT), GROUP BY, UNION and hash or merge
+-- joins work.
+
+CREATE FUNCTION arg_eq(arg, arg) RETURNS bool
+  AS 'MODULE_PATHNAME', 'arg_eq' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE LEAKPROOF;
+
+CREATE FUNCTION arg_ne(arg, arg) RETURNS bool
+  AS 'MODULE_PATHNAME', 'arg_ne' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE LEAKPROOF;
+
+CREATE FUNCTION arg_lt(arg, arg) RETURNS bool
+  AS 'MODULE_PATHNAME', 'arg_lt' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE LEAKPROOF;
+
+CREATE FUNCTION arg_le(arg, arg) RETURNS bool
+  AS 'MODULE_PATHNAME', 'arg_le' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE LEAKPROOF;
+
+CREATE FUNCTION arg_gt(arg, arg) RETURNS bool
+  AS 'MODULE_PATHNAME', 'arg_gt' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE LEAKPROOF;
+
+CREATE FUNCTION arg_ge(arg, arg) RETURNS bool
+  AS 'MODULE_PATHNAME', 'arg_ge' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE LEAKPROOF;
+
+CREATE FUNCTION arg_cmp(arg, arg) RETURNS int4
+  AS 'MODULE_PATHNAME', 'arg_cmp' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE LEAKPROOF;
+
+CREATE FUNCTION arg_hash(arg) RETURNS int4
+  AS 'MODULE_PATHNAME', 'arg_hash' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE;
+
+CREATE FUNCTION arg_hash_extended(arg, int8) RETURNS int8
+  AS 'MODULE_PATHNAME', 'arg_hash_extended' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE;
+
+CREATE OPERATOR = (
+  LEFTARG = arg, RIGHTARG = arg, FUNCTION = arg_eq,
+  COMMUTATOR = =, NEGATOR = <>, RESTRICT = eqsel, JOIN = eqjoinsel, HASHES, MERGES
+);
+
+CREATE OPERATOR <> (
+  LEFTARG = arg, RIGHTARG = arg, FUNCTION = arg_ne,
+  COMMUTATOR = <>, NEGATOR = =, RESTRICT = neqsel, JOIN = neqjoinsel
+);
+
+CREATE OPERATOR < (
+  LEFTARG = arg, RIGHTARG = arg, FUNCTION = arg_lt,
+  COMMUTATOR = >, NEGATOR = >=, RESTRICT = scalarltsel, JOIN = scalarltjoinsel
+);
+
+CREATE OPERATOR <= (
+  LEFTARG = arg, RIGHTARG = arg, FUNCTION = arg_le,
+  COMMUTATOR = >=, NEGATOR = >, RESTRICT = scalarlesel, JOIN = scalarlejoinsel
+);
+
+CREATE OPERATOR > (
+  LEFTARG = arg, RIGHTARG = arg, FUNCTION = arg_gt,
+  COMMUTATOR = <, NEGATOR = <=, RESTRICT = scalargtsel, JOIN = scalargtjoinsel
+);
+
+CREATE OPERATOR >= (
+  LEFTARG = arg, RIGHTARG = arg, FUNCTION = arg_ge,
+  COMMUTATOR = <=, NEGATOR = <, RESTRICT = scalargesel, JOIN = scalargejoinsel
+);
+
+CREATE OPERATOR CLASS arg_ops DEFAULT FOR TYPE arg USING btree AS
+  OPERATOR 1 <,
+  OPERATOR 2 <=,
+  OPERATOR 3 =,
+  OPERATOR 4 >=,
+  OPERATOR 5 >,
+  FUNCTION 1 arg_cmp(arg, arg);
+
+CREATE OPERATOR CLASS arg_hash_ops DEFAULT FOR TYPE arg USING hash AS
+  OPERATOR 1 = (arg, arg),
+  FUNCTION 1 arg_hash(arg),
+  FUNCTION 2 arg_hash_extended(arg, int8);
+
+-- The type arg_weights ----------------------------------------------------------------------
+
+CREATE TYPE arg_weights;
+
+CREATE FUNCTION arg_weights_in(cstring) RETURNS arg_weights
+  AS 'MODULE_PATHNAME', 'arg_weights_in' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE;
+
+CREATE FUNCTION arg_weights_out(arg_weights) RETURNS cstring
+  AS 'MODULE_PATHNAME', 'arg_weights_out' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE;
+
+CREATE FUNCTION arg_weights_recv(internal) RETURNS arg_weights
+  AS 'MODULE_PATHNAME', 'arg_weights_recv' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE;
+
+CREATE FUNCTION arg_weights_send(arg_weights) RETURNS bytea
+  AS 'MODULE_PATHNAME', 'arg_weights_send' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE;
+
+CREATE TYPE arg_weights (
+  INPUT = arg_weights_in,
+  OUTPUT = arg_weights_out,
+  RECEIVE = arg_weights_recv,
+  SEND = arg_weights_send,
+  INTERNALLENGTH = 48,
+  ALIGNMENT = int4,
+  STORAGE = plain
+);
+
+COMMENT ON TYPE arg_weights IS
+  'weights of matching and SIM: a preset (arg, mrg, shape, colour) and/or key=value pairs '
+  '(alpha_l beta_l gamma_l delta_l eps_l alpha_s beta_s lambda_1..lambda_4 norm tung groups)';
+
+-- Building ----------------------------------------------------------------------------------
 
 CREATE FUNCTION arg_build(mesh bytea, options text DEFAULT '') RETURNS arg
-  AS 'MODULE_PATHNAME', 'arg_build_mesh' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 100000;
+  AS 'MODULE_PATHNAME', 'arg_build_mesh' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 20000;
 
 COMMENT ON FUNCTION arg_build(bytea, text) IS
   'ARG of a mesh (OFF, OBJ, PLY, STL or GLB, detected); options like ''levels=5 mu=geodesic base_points=128''';
 
 CREATE FUNCTION arg_build(mesh bytea, texture bytea, options text DEFAULT '') RETURNS arg
-  AS 'MODULE_PATHNAME', 'arg_build_textured' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 100000;
+  AS 'MODULE_PATHNAME', 'arg_build_textured' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 20000;
 
 COMMENT ON FUNCTION arg_build(bytea, bytea, text) IS
   'ARG of a mesh whose texture image (PNG, JPEG, ...) is kept outside it, as OBJ does';
 
--- Comparing ----------------------------------------------------------------------------------
+-- Keeping an arg column up to date from a bytea column, as an alternative to a generated column:
+--   CREATE TRIGGER t BEFORE INSERT OR UPDATE ON tbl FOR EACH ROW
+--     EXECUTE FUNCTION arg_index_trigger('mesh', 'descr' [, 'texture' [, 'levels=5 ...']]);
+CREATE FUNCTION arg_index_trigger() RETURNS trigger
+  AS 'MODULE_PATHNAME', 'arg_index_trigger' LANGUAGE C;
 
-CREATE FUNCTION arg_sim(a arg, b arg, weights text DEFAULT 'arg') RETURNS float8
-  AS 'MODULE_PATHNAME', 'arg_sim' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 1000;
+COMMENT ON FUNCTION arg_index_trigger() IS
+  'trigger: arg_index_trigger(mesh_column, arg_column [, texture_column [, build_options]]) builds the ARG on INSERT and when the mesh changes';
 
-COMMENT ON FUNCTION arg_sim(arg, arg, text) IS
-  'SIM(a, b) in [0, 1], 0 for the same shape; weights: a preset (arg, mrg, shape, colour) and/or key=value pairs';
+-- Comparing ---------------------------------------------------------------------------------
+
+CREATE FUNCTION arg_sim(a arg, b arg, weights arg_weights DEFAULT 'arg') RETURNS float8
+  AS 'MODULE_PATHNAME', 'arg_sim' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 20;
+
+COMMENT ON FUNCTION arg_sim(arg, arg, arg_weights) IS
+  'SIM(a, b) in [0, 1], 0 for the same shape, symmetric';
 
 CREATE FUNCTION arg_distance(a arg, b arg) RETURNS float8
-  AS 'MODULE_PATHNAME', 'arg_distance' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 1000;
+  AS 'MODULE_PATHNAME', 'arg_distance' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 20;
 
 COMMENT ON FUNCTION arg_distance(arg, arg) IS 'arg_sim(a, b) with the default weights; the <~> operator';
 
@@ -67,7 +198,56 @@ CREATE OPERATOR <~> (
 
 COMMENT ON OPERATOR <~> (arg, arg) IS 'shape dissimilarity (SIM with default weights), for ORDER BY';
 
--- About --------------------------------------------------------------------------------------
+CREATE FUNCTION arg_matches(a arg, b arg, weights arg_weights DEFAULT 'arg')
+  RETURNS TABLE (level int, a_node int, b_node int, match_group int, loss float8, sim float8)
+  AS 'MODULE_PATHNAME', 'arg_matches' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE
+  COST 20 ROWS 40;
+
+COMMENT ON FUNCTION arg_matches(arg, arg, arg_weights) IS
+  'the node pairs matched to compute arg_sim(a, b, weights); nodes are numbered within their level';
+
+CREATE FUNCTION arg_part_match(query arg, level int, node int, candidate arg,
+                               weights arg_weights DEFAULT 'arg')
+  RETURNS TABLE (candidate_level int, candidate_node int, score float8)
+  AS 'MODULE_PATHNAME', 'arg_part_match' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE
+  COST 40 ROWS 5;
+
+COMMENT ON FUNCTION arg_part_match(arg, int, int, arg, arg_weights) IS
+  'nodes of candidate (at level and the levels next to it) whose parts match node of query at level, best (lowest score) first';
+
+-- Inspecting --------------------------------------------------------------------------------
+
+CREATE FUNCTION arg_nodes(arg)
+  RETURNS TABLE (level int, node int, parent int, area real, mu_min real, mu_max real,
+                 r real, theta real, phi real, volume real)
+  AS 'MODULE_PATHNAME', 'arg_nodes' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE
+  COST 30 ROWS 60;
+
+COMMENT ON FUNCTION arg_nodes(arg) IS
+  'one row per node: level, index within the level, parent''s index within level - 1, and attributes';
+
+CREATE FUNCTION arg_info(arg) RETURNS jsonb
+  AS 'MODULE_PATHNAME', 'arg_info' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 16;
+
+COMMENT ON FUNCTION arg_info(arg) IS
+  'levels, nodes per level, genus estimate, triangles, build options and builder version of an ARG';
+
+CREATE FUNCTION arg_svg(arg, level int DEFAULT 2) RETURNS text
+  AS 'MODULE_PATHNAME', 'arg_svg' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 25;
+
+COMMENT ON FUNCTION arg_svg(arg, int) IS 'the Reeb graph of one level as a self-contained SVG picture';
+
+-- Fixtures ----------------------------------------------------------------------------------
+
+CREATE FUNCTION arg_generate_model(class text, variant int, resolution int DEFAULT 32)
+  RETURNS bytea
+  AS 'MODULE_PATHNAME', 'arg_generate_model' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE
+  COST 8000;
+
+COMMENT ON FUNCTION arg_generate_model(text, int, int) IS
+  'OFF bytes of a deterministic generated model: class vase, cup, amphora, torus, fourleg, human, table, chair or octopus; any variant in [0, 999999]; resolution in [8, 128] grid cells';
+
+-- About -------------------------------------------------------------------------------------
 
 CREATE FUNCTION arg_version() RETURNS text
   AS 'MODULE_PATHNAME', 'arg_version' LANGUAGE C STABLE PARALLEL SAFE;

@@ -66,4 +66,12 @@ char* to_cstring(std::string_view text) {
   return result;
 }
 
+void* alloc_records(std::size_t count, std::size_t record_size) {
+  if (record_size == 0 || count > (MaxAllocSize - 1) / record_size)
+    throw arg::LimitError(std::to_string(count) + " result rows are over 1 GB");
+  void* result = palloc_extended(count * record_size + (count == 0), MCXT_ALLOC_NO_OOM);
+  if (!result) throw std::bad_alloc();
+  return result;
+}
+
 }  // namespace argpg

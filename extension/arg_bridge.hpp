@@ -87,6 +87,10 @@ varlena* to_varlena(std::string_view bytes);
 // Copies text into a new palloc'd C string; safe inside guarded() like to_varlena.
 char* to_cstring(std::string_view text);
 
+// palloc'd, uninitialised memory for `count` plain records (rows of a set-returning function);
+// safe inside guarded() like to_varlena.
+void* alloc_records(std::size_t count, std::size_t record_size);
+
 }  // namespace argpg
 
 // The `arg` type is a plain varlena; this gets it detoasted (short header allowed).

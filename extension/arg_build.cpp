@@ -2,16 +2,20 @@
 #include "build/build_arg.hpp"
 
 #include "arg_bridge.hpp"
+#include "arg_guc.hpp"
 
 namespace {
 
-Datum build(varlena* mesh, varlena* texture, varlena* options) {
+Datum build(const varlena* mesh, const varlena* texture, const varlena* options) {
+  const arg::Limits limits = argpg::current_limits();
+  const int max_threads = argpg::max_build_threads();
   varlena* result = nullptr;
   argpg::Outcome out = argpg::guarded([&] {
-    const arg::BuildOptions parsed = arg::parse_build_options(argpg::view(options));
+    arg::BuildOptions parsed = arg::parse_build_options(argpg::view(options));
+    if (parsed.threads > max_threads) parsed.threads = max_threads;  // never changes the result
     const std::string_view image = texture ? argpg::view(texture) : std::string_view();
-    result = argpg::to_varlena(arg::build_arg_bytes(argpg::view(mesh), image, parsed, arg::Limits{},
-                                                    argpg::stop_requested));
+    result = argpg::to_varlena(
+        arg::build_arg_bytes(argpg::view(mesh), image, parsed, limits, argpg::stop_requested));
   });
   argpg::raise_if_failed(out, ERRCODE_INVALID_PARAMETER_VALUE, "cannot build ARG");
   PG_RETURN_POINTER(result);

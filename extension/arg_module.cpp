@@ -1,12 +1,19 @@
-// The module itself: magic block and version.
+// The module itself: magic block, settings and version.
 #include "graph/serialize.hpp"
 
 #include "arg_bridge.hpp"
+#include "arg_guc.hpp"
 
 extern "C" {
 #include "utils/builtins.h"
 
 PG_MODULE_MAGIC;
+
+void _PG_init(void);
+
+void _PG_init(void) {
+  argpg::define_gucs();
+}
 
 PG_FUNCTION_INFO_V1(arg_version);
 

@@ -1,20 +1,23 @@
 // arg_sim and the <~> operator: SIM(a, b) in [0, 1], 0 for the same shape.
-#include "graph/serialize.hpp"
 #include "match/similarity.hpp"
-#include "match/weights.hpp"
 
-#include "arg_bridge.hpp"
+#include "arg_cache.hpp"
+#include "arg_weights.hpp"
 
 namespace {
 
-double similarity(varlena* a, varlena* b, std::string_view weights) {
+double similarity(FunctionCallInfo fcinfo, const arg::Weights& weights) {
+  argpg::GraphCacheHolder* cache = argpg::graph_cache(fcinfo);
+  const argpg::GraphArg a = argpg::graph_arg(fcinfo, cache, 0, 0);
+  const argpg::GraphArg b = argpg::graph_arg(fcinfo, cache, 1, 1);
   double sim = 0;
   argpg::Outcome out = argpg::guarded([&] {
-    const arg::Weights parsed = arg::parse_weights(weights);
-    sim = arg::arg_similarity(arg::deserialize_arg(argpg::view(a)),
-                              arg::deserialize_arg(argpg::view(b)), parsed);
+    arg::ArgGraph scratch_a, scratch_b;
+    const arg::ArgGraph& ga = argpg::graph_of(cache, 0, a, scratch_a);
+    const arg::ArgGraph& gb = argpg::graph_of(cache, 1, b, scratch_b);
+    sim = arg::arg_similarity(ga, gb, weights);
   });
-  argpg::raise_if_failed(out, ERRCODE_INVALID_PARAMETER_VALUE, "cannot compare ARGs");
+  argpg::raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot compare ARGs");
   return sim;
 }
 
@@ -25,15 +28,15 @@ extern "C" {
 PG_FUNCTION_INFO_V1(arg_sim);
 PG_FUNCTION_INFO_V1(arg_distance);
 
-// arg_sim(a arg, b arg, weights text DEFAULT 'arg')
+// arg_sim(a arg, b arg, weights arg_weights DEFAULT 'arg')
 Datum arg_sim(PG_FUNCTION_ARGS) {
-  PG_RETURN_FLOAT8(
-      similarity(PG_GETARG_ARG_PP(0), PG_GETARG_ARG_PP(1), argpg::view(PG_GETARG_TEXT_PP(2))));
+  const arg::Weights weights = argpg::to_weights(*PG_GETARG_ARG_WEIGHTS_P(2));
+  PG_RETURN_FLOAT8(similarity(fcinfo, weights));
 }
 
-// a <~> b: arg_sim with the default weights, for ORDER BY.
+// a <~> b: arg_sim with the default weights (the 'arg' preset), for ORDER BY.
 Datum arg_distance(PG_FUNCTION_ARGS) {
-  PG_RETURN_FLOAT8(similarity(PG_GETARG_ARG_PP(0), PG_GETARG_ARG_PP(1), "arg"));
+  PG_RETURN_FLOAT8(similarity(fcinfo, arg::Weights{}));
 }
 
 }  // extern "C"

@@ -2,7 +2,7 @@
 
 CREATE EXTENSION arg;
 
--- The type: a variable-length value, stored compressed and out of line when large.
+-- The type: a variable-length value, stored out of line (uncompressed) when large.
 SELECT typname, typlen, typstorage FROM pg_type WHERE typname = 'arg';
 
 SELECT arg_version();
@@ -81,7 +81,7 @@ SELECT a.name AS a, b.name AS b,
        arg_sim(a.descr, b.descr) = a.descr <~> b.descr AS operator_agrees
 FROM shapes a, shapes b WHERE a.name < b.name ORDER BY a.name, b.name;
 
--- Other weights: a preset name, or key=value pairs.
+-- Other weights: a preset name, or key=value pairs (an arg_weights value).
 SELECT arg_sim(descr, descr, 'mrg') AS mrg, arg_sim(descr, descr, 'shape lambda_1=0.1') AS custom
 FROM shapes WHERE name = 'octahedron';
 

@@ -3,6 +3,7 @@
 #   unit        GoogleTest through CTest (the CMake build in $BUILD_DIR)
 #   regression  pg_regress on sql/ + expected/ (make installcheck)
 #   pgtap       pg_prove on tests/pgtap/*.sql
+#   round trips tests/sql_roundtrip.sh: pg_dump/pg_restore and COPY (FORMAT binary) of arg values
 # The SQL suites run on a throwaway cluster that this script starts and always stops. A suite that
 # cannot run at all counts as one failure, never as zero tests. Exits non-zero on any failure.
 # Expects the build and `make install` done (make test does both first).
@@ -97,6 +98,20 @@ if [[ $cluster_up -eq 1 && ${#tap_files[@]} -gt 0 ]] &&
   suite "pgTAP tests (pg_prove)" "$passed" "$failed"
 else
   suite "pgTAP tests (pg_prove)" 0 1
+fi
+
+# --- dump/restore and binary COPY round trips -----------------------------------------------
+banner "round trips (pg_dump, COPY)"
+if [[ $cluster_up -eq 1 ]]; then
+  tests/sql_roundtrip.sh 2>&1 | tee "$logs/roundtrip.log"
+  rc=${PIPESTATUS[0]}
+  passed=$(grep -cE '^ok [0-9]+' "$logs/roundtrip.log")
+  failed=$(grep -cE '^not ok [0-9]+' "$logs/roundtrip.log")
+  [[ $rc -ne 0 && $failed -eq 0 ]] && failed=1
+  [[ $((passed + failed)) -eq 0 ]] && failed=1
+  suite "round trips (pg_dump, COPY)" "$passed" "$failed"
+else
+  suite "round trips (pg_dump, COPY)" 0 1
 fi
 
 # Stop the cluster before the summary so that the summary stays the last line.

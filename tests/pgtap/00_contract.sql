@@ -1,61 +1,143 @@
--- The SQL contract of the extension: objects, their markings, and the SQLSTATE of each failure.
+-- The SQL contract of the extension: its objects, their signatures and their markings.
 BEGIN;
 CREATE EXTENSION IF NOT EXISTS arg;
-SELECT plan(46);
+SELECT plan(146);
 
 SELECT has_extension('arg', 'the arg extension is installed');
 SELECT has_type('arg', 'type arg exists');
+SELECT has_type('arg_weights', 'type arg_weights exists');
+
+-- arg is a varlena stored out of line uncompressed; arg_weights a fixed 48 bytes; neither has a
+-- type modifier.
+SELECT is((SELECT typlen FROM pg_type WHERE typname = 'arg'), -1::int2, 'arg is variable-length');
+SELECT is((SELECT typstorage FROM pg_type WHERE typname = 'arg'), 'e'::"char",
+          'arg is stored out of line, uncompressed');
+SELECT is((SELECT typlen FROM pg_type WHERE typname = 'arg_weights'), 48::int2,
+          'arg_weights is a fixed-length value of 48 bytes');
+SELECT ok((SELECT NOT typbyval FROM pg_type WHERE typname = 'arg_weights'),
+          'arg_weights is passed by reference');
+SELECT is((SELECT count(*)::int FROM pg_type
+           WHERE typname IN ('arg', 'arg_weights') AND typmodin = 0 AND typmodout = 0), 2,
+          'neither type takes a type modifier');
+SELECT is((SELECT count(*)::int FROM pg_type
+           WHERE typname IN ('arg', 'arg_weights') AND typreceive <> 0 AND typsend <> 0), 2,
+          'both types have binary input and output');
+
+-- Operators.
 SELECT has_operator('arg', '<~>', 'arg', 'double precision', 'operator arg <~> arg exists');
+SELECT has_operator('arg', op, 'arg', 'boolean', 'operator arg ' || op || ' arg exists')
+FROM unnest(ARRAY['=', '<>', '<', '<=', '>', '>=']) AS op;
+SELECT ok((SELECT oprcanhash FROM pg_operator
+           WHERE oprname = '=' AND oprleft = 'arg'::regtype AND oprright = 'arg'::regtype),
+          '= on arg can hash (hash joins, hashed DISTINCT and GROUP BY)');
+SELECT has_opclass('arg_hash_ops', 'hash operator class for arg exists');
+SELECT has_opclass('arg_ops', 'btree operator class for arg exists');
+SELECT ok(EXISTS (SELECT 1 FROM pg_opclass c JOIN pg_am a ON a.oid = c.opcmethod
+                  WHERE c.opcname = 'arg_hash_ops' AND a.amname = 'hash' AND c.opcdefault),
+          'arg_hash_ops is the default hash operator class of arg');
+SELECT ok(EXISTS (SELECT 1 FROM pg_opclass c JOIN pg_am a ON a.oid = c.opcmethod
+                  WHERE c.opcname = 'arg_ops' AND a.amname = 'btree' AND c.opcdefault),
+          'arg_ops is the default btree operator class of arg');
 
--- Every function of the SQL surface, with its signature and return type.
-SELECT has_function('arg_in', ARRAY['cstring']);
-SELECT has_function('arg_out', ARRAY['arg']);
-SELECT has_function('arg_recv', ARRAY['internal']);
-SELECT has_function('arg_send', ARRAY['arg']);
-SELECT has_function('arg_build', ARRAY['bytea', 'text']);
-SELECT has_function('arg_build', ARRAY['bytea', 'bytea', 'text']);
-SELECT has_function('arg_sim', ARRAY['arg', 'arg', 'text']);
-SELECT has_function('arg_distance', ARRAY['arg', 'arg']);
-SELECT has_function('arg_version', '{}'::name[]);
-SELECT function_returns('arg_build', ARRAY['bytea', 'text'], 'arg');
-SELECT function_returns('arg_sim', ARRAY['arg', 'arg', 'text'], 'double precision');
+-- Every function of the SQL surface, with its signature and return type. Pure functions are
+-- IMMUTABLE STRICT PARALLEL SAFE, so they work in generated columns and parallel plans.
+CREATE TEMP TABLE surface (sig regprocedure PRIMARY KEY, returns text, pure bool);
+INSERT INTO surface VALUES
+  ('arg_in(cstring)', 'arg', true),
+  ('arg_out(arg)', 'cstring', true),
+  ('arg_recv(internal)', 'arg', true),
+  ('arg_send(arg)', 'bytea', true),
+  ('arg_eq(arg,arg)', 'boolean', true),
+  ('arg_ne(arg,arg)', 'boolean', true),
+  ('arg_lt(arg,arg)', 'boolean', true),
+  ('arg_le(arg,arg)', 'boolean', true),
+  ('arg_gt(arg,arg)', 'boolean', true),
+  ('arg_ge(arg,arg)', 'boolean', true),
+  ('arg_cmp(arg,arg)', 'integer', true),
+  ('arg_hash(arg)', 'integer', true),
+  ('arg_hash_extended(arg,bigint)', 'bigint', true),
+  ('arg_weights_in(cstring)', 'arg_weights', true),
+  ('arg_weights_out(arg_weights)', 'cstring', true),
+  ('arg_weights_recv(internal)', 'arg_weights', true),
+  ('arg_weights_send(arg_weights)', 'bytea', true),
+  ('arg_build(bytea,text)', 'arg', true),
+  ('arg_build(bytea,bytea,text)', 'arg', true),
+  ('arg_sim(arg,arg,arg_weights)', 'double precision', true),
+  ('arg_distance(arg,arg)', 'double precision', true),
+  ('arg_matches(arg,arg,arg_weights)',
+   'TABLE(level integer, a_node integer, b_node integer, match_group integer, loss double precision, sim double precision)',
+   true),
+  ('arg_part_match(arg,integer,integer,arg,arg_weights)',
+   'TABLE(candidate_level integer, candidate_node integer, score double precision)', true),
+  ('arg_nodes(arg)',
+   'TABLE(level integer, node integer, parent integer, area real, mu_min real, mu_max real, r real, theta real, phi real, volume real)',
+   true),
+  ('arg_info(arg)', 'jsonb', true),
+  ('arg_svg(arg,integer)', 'text', true),
+  ('arg_generate_model(text,integer,integer)', 'bytea', true),
+  ('arg_index_trigger()', 'trigger', false),
+  ('arg_version()', 'text', false);
 
--- Pure functions are IMMUTABLE STRICT PARALLEL SAFE, so they work in generated columns,
--- indexes and parallel plans.
-CREATE TEMP TABLE pure_functions (sig regprocedure);
-INSERT INTO pure_functions VALUES
-  ('arg_in(cstring)'), ('arg_out(arg)'), ('arg_recv(internal)'), ('arg_send(arg)'),
-  ('arg_build(bytea,text)'), ('arg_build(bytea,bytea,text)'), ('arg_sim(arg,arg,text)'),
-  ('arg_distance(arg,arg)');
-SELECT is(p.provolatile, 'i', f.sig::text || ' is IMMUTABLE')
-FROM pure_functions f JOIN pg_proc p ON p.oid = f.sig ORDER BY f.sig::text;
-SELECT ok(p.proisstrict, f.sig::text || ' is STRICT')
-FROM pure_functions f JOIN pg_proc p ON p.oid = f.sig ORDER BY f.sig::text;
-SELECT is(p.proparallel, 's', f.sig::text || ' is PARALLEL SAFE')
-FROM pure_functions f JOIN pg_proc p ON p.oid = f.sig ORDER BY f.sig::text;
+SELECT set_eq(
+  $$ SELECT p.oid::regprocedure::text FROM pg_proc p
+     JOIN pg_depend d ON d.objid = p.oid AND d.classid = 'pg_proc'::regclass AND d.deptype = 'e'
+     JOIN pg_extension e ON e.oid = d.refobjid WHERE e.extname = 'arg' $$,
+  $$ SELECT sig::text FROM surface $$,
+  'the extension has exactly the functions of its documented surface');
 
--- Building and comparing work on a closed mesh.
-CREATE TEMP TABLE octahedron AS
-SELECT convert_to(E'OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n'
-                  '3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n',
-                  'UTF8') AS mesh;
-SELECT lives_ok($$ SELECT arg_build(mesh) FROM octahedron $$, 'an octahedron builds');
+SELECT is(pg_get_function_result(sig), returns, sig::text || ' returns ' || returns)
+FROM surface ORDER BY sig::text;
+
+-- (Set-returning functions return TABLE(...): one row per match, part or node.)
+SELECT is(p.provolatile, 'i', s.sig::text || ' is IMMUTABLE')
+FROM surface s JOIN pg_proc p ON p.oid = s.sig WHERE s.pure ORDER BY s.sig::text;
+SELECT ok(p.proisstrict, s.sig::text || ' is STRICT')
+FROM surface s JOIN pg_proc p ON p.oid = s.sig WHERE s.pure ORDER BY s.sig::text;
+SELECT is(p.proparallel, 's', s.sig::text || ' is PARALLEL SAFE')
+FROM surface s JOIN pg_proc p ON p.oid = s.sig WHERE s.pure ORDER BY s.sig::text;
+
+SELECT volatility_is('arg_index_trigger', '{}'::name[], 'volatile',
+                     'arg_index_trigger() is a volatile trigger function');
+SELECT volatility_is('arg_version', '{}'::name[], 'stable', 'arg_version() is STABLE');
+
+-- Defaults: weights default to the arg preset (stored as its canonical text), options to none,
+-- the generator's resolution to 32.
+SELECT is(pg_get_function_arguments('arg_sim(arg,arg,arg_weights)'::regprocedure),
+          'a arg, b arg, weights arg_weights DEFAULT ''' || 'arg'::arg_weights::text || '''::arg_weights',
+          'arg_sim''s weights default to the arg preset');
+SELECT is(pg_get_function_arguments('arg_build(bytea,text)'::regprocedure),
+          'mesh bytea, options text DEFAULT ''''::text', 'arg_build''s options default to none');
+SELECT is(pg_get_function_arguments('arg_generate_model(text,integer,integer)'::regprocedure),
+          'class text, variant integer, resolution integer DEFAULT 32',
+          'arg_generate_model''s resolution defaults to 32');
+
+-- COST reflects measured run times: a build costs thousands of comparisons, a comparison more
+-- than an operator of the core types.
+SELECT cmp_ok((SELECT procost::numeric FROM pg_proc WHERE oid = 'arg_build(bytea,text)'::regprocedure), '>=',
+              1000 * (SELECT procost::numeric FROM pg_proc WHERE oid = 'arg_sim(arg,arg,arg_weights)'::regprocedure),
+              'arg_build costs at least a thousand times arg_sim');
+SELECT cmp_ok((SELECT procost::numeric FROM pg_proc WHERE oid = 'arg_distance(arg,arg)'::regprocedure), '>', 1::numeric,
+              'the <~> function costs more than a built-in operator');
+SELECT is((SELECT procost FROM pg_proc WHERE oid = 'arg_distance(arg,arg)'::regprocedure),
+          (SELECT procost FROM pg_proc WHERE oid = 'arg_sim(arg,arg,arg_weights)'::regprocedure),
+          '<~> costs what arg_sim costs');
+
+-- Settings: the arg. prefix is reserved; caps only a superuser may raise.
+SELECT throws_ok($$ SET arg.no_such_setting = 1 $$, '42602', NULL,
+                 'the arg. prefix is reserved: unknown settings are refused');
+SELECT is((SELECT count(*)::int FROM pg_settings WHERE name LIKE 'arg.max%' AND context = 'superuser'), 5,
+          'the five caps are superuser settings');
+SELECT is((SELECT context FROM pg_settings WHERE name = 'arg.query_cache'), 'user',
+          'arg.query_cache is a user setting');
+
+-- Building and comparing work on a generated model.
+CREATE TEMP TABLE cup AS SELECT arg_generate_model('cup', 0, 16) AS mesh;
+SELECT lives_ok($$ SELECT arg_build(mesh) FROM cup $$, 'a generated cup builds');
 SELECT is(arg_sim(arg_build(mesh), arg_build(mesh)), 0::float8, 'self-similarity is zero')
-FROM octahedron;
-
--- Each kind of failure has its SQLSTATE.
-SELECT throws_ok($$ SELECT arg_build(convert_to(E'OFF\n6 8 0\n1 0 0\n', 'UTF8')) $$,
-                 '22023', NULL, 'a truncated OFF file is rejected (22023)');
-SELECT throws_ok($$ SELECT arg_build('\x00ff13deadbeef'::bytea) $$,
-                 '22023', NULL, 'garbage bytes are rejected (22023)');
-SELECT throws_ok($$ SELECT arg_build(mesh, 'no_such_option=1') FROM octahedron $$,
-                 '22023', NULL, 'an unknown build option is rejected (22023)');
-SELECT throws_ok($$ SELECT 'not an arg'::arg $$,
-                 '22P02', NULL, 'text that is not an ARG is rejected (22P02)');
-SELECT throws_ok($$ SELECT 'arg1:QUJD'::arg $$,
-                 '22P02', NULL, 'base64 that is not an ARG is rejected (22P02)');
-SELECT throws_ok($$ SELECT arg_sim(a, a, 'no_such_preset') FROM (SELECT arg_build(mesh) AS a FROM octahedron) s $$,
-                 '22023', NULL, 'unknown weights are rejected (22023)');
+FROM cup;
+SELECT is(arg_hash(arg_build(mesh)), (arg_hash_extended(arg_build(mesh), 0) & 4294967295)::bit(32)::int,
+          'with seed 0, arg_hash_extended agrees with arg_hash (as hash operator classes require)')
+FROM cup;
 
 SELECT * FROM finish();
 ROLLBACK;

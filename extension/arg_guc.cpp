@@ -1,0 +1,76 @@
+// The extension's settings. Each one caps a resource or switches a cache; none changes a value
+// that a function returns, so results never depend on the session (IMMUTABLE stays true).
+#include "arg_guc.hpp"
+
+#include <climits>
+
+#include "arg_bridge.hpp"
+
+extern "C" {
+#include "utils/guc.h"
+}
+
+namespace argpg {
+
+namespace {
+
+const arg::Limits kDefaults;
+
+int max_input_kb = int(kDefaults.max_input_bytes >> 10);
+int max_vertices = int(kDefaults.max_vertices);
+int max_triangles = int(kDefaults.max_triangles);
+int max_texture_pixels = int(kDefaults.max_image_pixels);
+int build_threads = 1;
+bool query_cache = true;
+
+}  // namespace
+
+void define_gucs() {
+  // Caps protect the server, so only a superuser may raise them (PGC_SUSET).
+  DefineCustomIntVariable("arg.max_input_size",
+                          "Largest mesh or texture image, in bytes, that arg_build accepts.",
+                          "Larger inputs fail with SQLSTATE 54000.", &max_input_kb, max_input_kb, 1,
+                          1024 * 1024, PGC_SUSET, GUC_UNIT_KB, nullptr, nullptr, nullptr);
+  DefineCustomIntVariable("arg.max_vertices",
+                          "Most vertices a mesh given to arg_build may declare.",
+                          "Larger meshes fail with SQLSTATE 54000.", &max_vertices, max_vertices, 3,
+                          INT_MAX, PGC_SUSET, 0, nullptr, nullptr, nullptr);
+  DefineCustomIntVariable("arg.max_triangles",
+                          "Most triangles a mesh given to arg_build may declare.",
+                          "Larger meshes fail with SQLSTATE 54000.", &max_triangles, max_triangles,
+                          1, INT_MAX, PGC_SUSET, 0, nullptr, nullptr, nullptr);
+  DefineCustomIntVariable("arg.max_texture_pixels",
+                          "Most pixels a texture image given to arg_build may have.",
+                          "Larger images fail with SQLSTATE 54000.", &max_texture_pixels,
+                          max_texture_pixels, 1, INT_MAX, PGC_SUSET, 0, nullptr, nullptr, nullptr);
+  DefineCustomIntVariable(
+      "arg.max_build_threads", "Most threads one arg_build may use for its threads= option.",
+      "The number of threads never changes the ARG; 1 keeps every build in the backend's own "
+      "thread.",
+      &build_threads, 1, 1, 64, PGC_SUSET, 0, nullptr, nullptr, nullptr);
+  DefineCustomBoolVariable(
+      "arg.query_cache",
+      "Keeps the deserialised ARG of an argument that repeats across calls, such as the query "
+      "of ORDER BY descr <~> $1.",
+      nullptr, &query_cache, true, PGC_USERSET, 0, nullptr, nullptr, nullptr);
+  MarkGUCPrefixReserved("arg");
+}
+
+arg::Limits current_limits() {
+  arg::Limits limits;
+  limits.max_input_bytes = std::size_t(max_input_kb) << 10;
+  limits.max_vertices = std::size_t(max_vertices);
+  limits.max_triangles = std::size_t(max_triangles);
+  limits.max_image_pixels = std::size_t(max_texture_pixels);
+  return limits;
+}
+
+int max_build_threads() {
+  return build_threads;
+}
+
+bool query_cache_enabled() {
+  return query_cache;
+}
+
+}  // namespace argpg

@@ -1,0 +1,27 @@
+// The `arg_weights` type: the matching weights as a fixed-length value (48 bytes, by reference).
+#pragma once
+
+#include "match/weights.hpp"
+
+#include "arg_bridge.hpp"
+
+namespace argpg {
+
+// The stored form: the eleven weights in the order of arg::format_weights, then the switches.
+// Unused bits and bytes are always zero, so equal weights are equal bytes.
+struct ArgWeights {
+  float4 values[11];
+  uint8 flags;  // kL2, kTungRule, kGroups
+  uint8 unused[3];
+};
+static_assert(sizeof(ArgWeights) == 48, "arg_weights has INTERNALLENGTH = 48");
+
+inline constexpr uint8 kL2 = 1, kTungRule = 2, kGroups = 4;
+
+// Plain conversions (no allocation, no exception): safe anywhere.
+arg::Weights to_weights(const ArgWeights& stored);
+ArgWeights from_weights(const arg::Weights& weights);
+
+}  // namespace argpg
+
+#define PG_GETARG_ARG_WEIGHTS_P(n) ((const argpg::ArgWeights*)PG_GETARG_POINTER(n))
