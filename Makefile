@@ -33,7 +33,9 @@ REGRESS_OPTS = --outputdir=$(BUILD_DIR)/regress
 PG_CPPFLAGS = -Icore -I/usr/include/eigen3 -DARG_VERSION='"$(EXTVERSION)"' -D_USE_MATH_DEFINES
 PG_CXXFLAGS = -std=c++17 -Wextra -Wno-unused-parameter -Wno-missing-field-initializers \
               $(if $(CI),-Werror)
-SHLIB_LINK = $(CORE_LIB) -lOpenMeshCore -lOpenImageIO -lOpenImageIO_Util -pthread -lstdc++
+# OpenImageIO is not linked: arg_image.so (built by CMake) is loaded on the first texture.
+SHLIB_LINK = $(CORE_LIB) -lOpenMeshCore -pthread -lstdc++
+IMAGE_LIB = $(BUILD_DIR)/arg_image$(DLSUFFIX)
 
 # PGXS's LLVM bitcode rule ignores PG_CXXFLAGS (so no -std=c++17) and JIT inlining gains nothing
 # here: build without bitcode. Track header dependencies so core header changes rebuild the glue.
@@ -57,10 +59,15 @@ $(BUILD_DIR)/CMakeCache.txt:
 # ARG_NO_CMAKE=1 (used for the sudo install step) takes the library as it is.
 ifneq ($(ARG_NO_CMAKE),1)
 $(CORE_LIB): FORCE | $(BUILD_DIR)/CMakeCache.txt
-	$(CMAKE) --build $(BUILD_DIR) --target argcore -j $(JOBS)
+	$(CMAKE) --build $(BUILD_DIR) --target argcore argimage -j $(JOBS)
 endif
 
 arg$(DLSUFFIX): $(CORE_LIB)
+
+install: install-image
+.PHONY: install-image
+install-image:
+	$(INSTALL_SHLIB) '$(IMAGE_LIB)' '$(DESTDIR)$(pkglibdir)/arg_image$(DLSUFFIX)'
 
 .PHONY: FORCE
 FORCE:

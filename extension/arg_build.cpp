@@ -3,6 +3,7 @@
 
 #include "arg_bridge.hpp"
 #include "arg_guc.hpp"
+#include "arg_image.hpp"
 
 namespace {
 
@@ -10,6 +11,8 @@ Datum build(const varlena* mesh, const varlena* texture, const varlena* options)
   const arg::Limits limits = argpg::current_limits();
   const int max_threads = argpg::max_build_threads();
   varlena* result = nullptr;
+  argpg::prepare_image_decoder(argpg::view(mesh),
+                               texture ? argpg::view(texture) : std::string_view());
   argpg::Outcome out = argpg::guarded([&] {
     arg::BuildOptions parsed = arg::parse_build_options(argpg::view(options));
     if (parsed.threads > max_threads) parsed.threads = max_threads;  // never changes the result

@@ -9,6 +9,7 @@
 
 #include "arg_bridge.hpp"
 #include "arg_guc.hpp"
+#include "arg_image.hpp"
 
 // commands/trigger.h reaches PostgreSQL's spinlock headers, which use `register` (not C++17).
 #pragma GCC diagnostic push
@@ -132,6 +133,8 @@ Datum arg_index_trigger(PG_FUNCTION_ARGS) {
     const arg::Limits limits = argpg::current_limits();
     const int max_threads = argpg::max_build_threads();
     varlena* result = nullptr;
+    argpg::prepare_image_decoder(argpg::view(mesh),
+                                 texture ? argpg::view(texture) : std::string_view());
     argpg::Outcome out = argpg::guarded([&] {
       arg::BuildOptions parsed = arg::parse_build_options(options);
       if (parsed.threads > max_threads) parsed.threads = max_threads;

@@ -27,7 +27,7 @@
 #include "render/match_picture.hpp"
 #include "render/render_model.hpp"
 #include "render/view_camera.hpp"
-#include "render/write_png.hpp"
+#include "oiio/write_png.hpp"
 
 using namespace arg;
 

@@ -9,7 +9,7 @@
 #include "load_arg.hpp"
 #include "render/graph_svg.hpp"
 #include "render/render_model.hpp"
-#include "render/write_png.hpp"
+#include "oiio/write_png.hpp"
 #include "render_input.hpp"
 
 namespace {

@@ -15,7 +15,7 @@
 #include "render/bitmap_font.hpp"
 #include "render/match_picture.hpp"
 #include "render/render_model.hpp"
-#include "render/write_png.hpp"
+#include "oiio/write_png.hpp"
 #include "render_input.hpp"
 
 namespace {

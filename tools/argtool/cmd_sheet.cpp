@@ -13,7 +13,7 @@
 #include "match/similarity.hpp"
 #include "render/contact_sheet.hpp"
 #include "render/render_model.hpp"
-#include "render/write_png.hpp"
+#include "oiio/write_png.hpp"
 #include "render_input.hpp"
 
 namespace {

@@ -1,5 +1,5 @@
 // PNG output through OpenImageIO's ImageOutput, the library the project already reads images with.
-#include "render/write_png.hpp"
+#include "oiio/write_png.hpp"
 
 #include <OpenImageIO/imageio.h>
 
