@@ -164,41 +164,42 @@ void check_structure(const ArgGraph& g) {
   for (int r = 0; r <= levels; ++r) {
     for (std::uint32_t i = g.level_begin[r]; i < g.level_begin[r + 1]; ++i) {
       const ArgNode& node = g.nodes[i];
-      const std::string at = "node " + std::to_string(i);
+      // The message prefix is only built when a check fails: this loop runs on every read.
+      auto at = [i] { return "node " + std::to_string(i); };
       if (node.level != r)
-        fail(at + ": level " + std::to_string(node.level) + " in level " + std::to_string(r) +
+        fail(at() + ": level " + std::to_string(node.level) + " in level " + std::to_string(r) +
              "'s range");
-      if (node.interval >= (1u << r)) fail(at + ": interval out of range");
+      if (node.interval >= (1u << r)) fail(at() + ": interval out of range");
       if (i > g.level_begin[r] && g.nodes[i - 1].interval > node.interval)
-        fail(at + ": nodes not sorted by interval");
+        fail(at() + ": nodes not sorted by interval");
       if (r == 0) {
-        if (node.parent != -1) fail(at + ": level-0 node has a parent");
+        if (node.parent != -1) fail(at() + ": level-0 node has a parent");
       } else {
         if (node.parent < std::int32_t(g.level_begin[r - 1]) ||
             node.parent >= std::int32_t(g.level_begin[r]))
-          fail(at + ": parent out of range");
+          fail(at() + ": parent out of range");
         if (g.nodes[node.parent].interval != node.interval / 2)
-          fail(at + ": parent lies in another mu interval");
+          fail(at() + ": parent lies in another mu interval");
       }
       if (node.child_begin != child_cursor || node.child_count > g.children.size() - child_cursor)
-        fail(at + ": children range out of order or out of bounds");
+        fail(at() + ": children range out of order or out of bounds");
       for (std::uint32_t k = 0; k < node.child_count; ++k) {
         std::uint32_t c = g.children[child_cursor + k];
         if (c >= n || g.nodes[c].parent != std::int32_t(i) || seen_as_child[c])
-          fail(at + ": child " + std::to_string(c) + " does not point back or is listed twice");
+          fail(at() + ": child " + std::to_string(c) + " does not point back or is listed twice");
         seen_as_child[c] = 1;
       }
       child_cursor += node.child_count;
       if (node.adj_begin != adj_cursor || node.adj_count > g.adjacency.size() - adj_cursor)
-        fail(at + ": adjacency range out of order or out of bounds");
+        fail(at() + ": adjacency range out of order or out of bounds");
       for (std::uint32_t k = 0; k < node.adj_count; ++k) {
         std::uint32_t j = g.adjacency[adj_cursor + k];
         if (j < g.level_begin[r] || j >= g.level_begin[r + 1])
-          fail(at + ": neighbour " + std::to_string(j) + " is not on the same level");
+          fail(at() + ": neighbour " + std::to_string(j) + " is not on the same level");
         int gap = int(g.nodes[j].interval) - int(node.interval);
-        if (gap != 1 && gap != -1) fail(at + ": neighbour not in an adjacent interval");
+        if (gap != 1 && gap != -1) fail(at() + ": neighbour not in an adjacent interval");
         if (k > 0 && g.adjacency[adj_cursor + k - 1] >= j)
-          fail(at + ": neighbours not sorted or repeated");
+          fail(at() + ": neighbours not sorted or repeated");
       }
       adj_cursor += node.adj_count;
     }
