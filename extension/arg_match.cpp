@@ -56,7 +56,8 @@ Datum arg_part_match(PG_FUNCTION_ARGS) {
     arg::ArgGraph scratch_q, scratch_c;
     const arg::ArgGraph& q = argpg::graph_of(cache, 0, query, scratch_q);
     const arg::ArgGraph& c = argpg::graph_of(cache, 1, candidate, scratch_c);
-    const std::vector<arg::PartMatch> parts = arg::part_match(q, level, node, c, weights);
+    const std::vector<arg::PartMatch> parts =
+        arg::part_match(q, level, node, c, weights, 0.5, argpg::stop_requested);
     rows = copy_rows<PartRow, arg::PartMatch>(parts, [](const arg::PartMatch& p) {
       return PartRow{p.level, p.node, p.score};
     });

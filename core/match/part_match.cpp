@@ -31,7 +31,7 @@ bool topologically_consistent(const ArgNode& m, const ArgNode& n) {
 
 std::vector<PartMatch> part_match(const ArgGraph& query, int level, int node,
                                   const ArgGraph& candidate, const Weights& weights,
-                                  double threshold) {
+                                  double threshold, const StopRequested& stop) {
   if (level < 0 || level > query.levels())
     throw InputError("part match: level " + std::to_string(level) + " not in [0, " +
                      std::to_string(query.levels()) + "]");
@@ -49,6 +49,7 @@ std::vector<PartMatch> part_match(const ArgGraph& query, int level, int node,
   for (int r = std::max(0, level - 1); r <= std::min(candidate.levels(), level + 1); ++r) {
     for (std::uint32_t i = candidate.level_begin[std::size_t(r)];
          i < candidate.level_begin[std::size_t(r) + 1]; ++i) {
+      check_interrupt(stop);
       const ArgNode& c = candidate.nodes[i];
       const double similarity = node_similarity(q, c, w);
       if (similarity < threshold || !topologically_consistent(q, c)) continue;

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/limits.hpp"
 #include "graph/arg_graph.hpp"
 #include "match/weights.hpp"
 
@@ -35,9 +36,10 @@ struct PartMatch {
 // number of neighbours differs by at most one. Each is scored by the mean of the SIM of the
 // renormalised sub-graphs below the two nodes and 1 - the node similarity; best (lowest)
 // first. `node` is the query node's index within `level`.
-// Throws InputError when level or node is out of range.
+// Throws InputError when level or node is out of range, Interrupted when `stop` says so (it is
+// polled once per candidate node).
 std::vector<PartMatch> part_match(const ArgGraph& query, int level, int node,
                                   const ArgGraph& candidate, const Weights& weights = {},
-                                  double threshold = 0.5);
+                                  double threshold = 0.5, const StopRequested& stop = {});
 
 }  // namespace arg
