@@ -2,29 +2,28 @@
 #include "build/build_arg.hpp"
 
 #include "arg_bridge.hpp"
+#include "arg_build.hpp"
 #include "arg_guc.hpp"
 #include "arg_image.hpp"
 
-namespace {
+namespace argpg {
 
-Datum build(const varlena* mesh, const varlena* texture, const varlena* options) {
-  const arg::Limits limits = argpg::current_limits();
-  const int max_threads = argpg::max_build_threads();
+varlena* build_arg_datum(std::string_view mesh, std::string_view texture,
+                         std::string_view options) {
+  const arg::Limits limits = current_limits();
+  const int max_threads = max_build_threads();
   varlena* result = nullptr;
-  argpg::prepare_image_decoder(argpg::view(mesh),
-                               texture ? argpg::view(texture) : std::string_view());
-  argpg::Outcome out = argpg::guarded([&] {
-    arg::BuildOptions parsed = arg::parse_build_options(argpg::view(options));
+  prepare_image_decoder(mesh, texture);
+  Outcome out = guarded([&] {
+    arg::BuildOptions parsed = arg::parse_build_options(options);
     if (parsed.threads > max_threads) parsed.threads = max_threads;  // never changes the result
-    const std::string_view image = texture ? argpg::view(texture) : std::string_view();
-    result = argpg::to_varlena(
-        arg::build_arg_bytes(argpg::view(mesh), image, parsed, limits, argpg::stop_requested));
+    result = to_varlena(arg::build_arg_bytes(mesh, texture, parsed, limits, stop_requested));
   });
-  argpg::raise_if_failed(out, ERRCODE_INVALID_PARAMETER_VALUE, "cannot build ARG");
-  PG_RETURN_POINTER(result);
+  raise_if_failed(out, ERRCODE_INVALID_PARAMETER_VALUE, "cannot build ARG");
+  return result;
 }
 
-}  // namespace
+}  // namespace argpg
 
 extern "C" {
 
@@ -33,12 +32,15 @@ PG_FUNCTION_INFO_V1(arg_build_textured);
 
 // arg_build(mesh bytea, options text DEFAULT '')
 Datum arg_build_mesh(PG_FUNCTION_ARGS) {
-  return build(PG_GETARG_BYTEA_PP(0), nullptr, PG_GETARG_TEXT_PP(1));
+  PG_RETURN_POINTER(argpg::build_arg_datum(argpg::view(PG_GETARG_BYTEA_PP(0)), {},
+                                           argpg::view(PG_GETARG_TEXT_PP(1))));
 }
 
 // arg_build(mesh bytea, texture bytea, options text DEFAULT '')
 Datum arg_build_textured(PG_FUNCTION_ARGS) {
-  return build(PG_GETARG_BYTEA_PP(0), PG_GETARG_BYTEA_PP(1), PG_GETARG_TEXT_PP(2));
+  PG_RETURN_POINTER(argpg::build_arg_datum(argpg::view(PG_GETARG_BYTEA_PP(0)),
+                                           argpg::view(PG_GETARG_BYTEA_PP(1)),
+                                           argpg::view(PG_GETARG_TEXT_PP(2))));
 }
 
 }  // extern "C"

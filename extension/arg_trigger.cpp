@@ -8,8 +8,8 @@
 #include "build/build_arg.hpp"
 
 #include "arg_bridge.hpp"
+#include "arg_build.hpp"
 #include "arg_guc.hpp"
-#include "arg_image.hpp"
 
 // commands/trigger.h reaches PostgreSQL's spinlock headers, which use `register` (not C++17).
 #pragma GCC diagnostic push
@@ -130,19 +130,8 @@ Datum arg_index_trigger(PG_FUNCTION_ARGS) {
   if (!mesh_null) {
     const varlena* mesh = PG_DETOAST_DATUM_PACKED(mesh_datum);
     const varlena* texture = texture_null ? nullptr : PG_DETOAST_DATUM_PACKED(texture_datum);
-    const arg::Limits limits = argpg::current_limits();
-    const int max_threads = argpg::max_build_threads();
-    varlena* result = nullptr;
-    argpg::prepare_image_decoder(argpg::view(mesh),
-                                 texture ? argpg::view(texture) : std::string_view());
-    argpg::Outcome out = argpg::guarded([&] {
-      arg::BuildOptions parsed = arg::parse_build_options(options);
-      if (parsed.threads > max_threads) parsed.threads = max_threads;
-      result = argpg::to_varlena(arg::build_arg_bytes(
-          argpg::view(mesh), texture ? argpg::view(texture) : std::string_view(), parsed, limits,
-          argpg::stop_requested));
-    });
-    argpg::raise_if_failed(out, ERRCODE_INVALID_PARAMETER_VALUE, "cannot build ARG");
+    varlena* result = argpg::build_arg_datum(
+        argpg::view(mesh), texture ? argpg::view(texture) : std::string_view(), options);
     value = PointerGetDatum(result);
   }
   bool null = mesh_null;

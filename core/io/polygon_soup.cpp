@@ -160,4 +160,23 @@ void SoupBuilder::check_indices() const {
   }
 }
 
+void check_declared_counts(SoupBuilder& out, std::size_t vertices, std::size_t faces,
+                           std::size_t min_vertex_bytes, std::size_t min_face_bytes,
+                           std::size_t left) {
+  // Compare in floating point so that absurd counts cannot overflow.
+  if (double(vertices) * double(min_vertex_bytes) + double(faces) * double(min_face_bytes) >
+      double(left) + 1.0) {
+    out.fail("header declares " + std::to_string(vertices) + " vertices and " +
+             std::to_string(faces) + " faces but only " + std::to_string(left) + " bytes follow");
+  }
+  if (vertices > out.limits().max_vertices) {
+    out.fail_limit("header declares " + std::to_string(vertices) + " vertices, more than " +
+                   std::to_string(out.limits().max_vertices));
+  }
+  if (faces > out.limits().max_triangles) {
+    out.fail_limit("header declares " + std::to_string(faces) + " faces, more than " +
+                   std::to_string(out.limits().max_triangles) + " triangles");
+  }
+}
+
 }  // namespace arg::io

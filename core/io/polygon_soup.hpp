@@ -83,4 +83,11 @@ class SoupBuilder {
 [[noreturn]] void throw_input_error(const std::string& format, const std::string& where,
                                     const std::string& message);
 
+// Rejects a header's vertex and face counts that the `left` bytes after it cannot hold (at
+// least `min_vertex_bytes` and `min_face_bytes` each) or that exceed the caps, before anything
+// is allocated for them. InputError / LimitError through `out`.
+void check_declared_counts(SoupBuilder& out, std::size_t vertices, std::size_t faces,
+                           std::size_t min_vertex_bytes, std::size_t min_face_bytes,
+                           std::size_t left);
+
 }  // namespace arg::io

@@ -95,19 +95,8 @@ void read_off(std::string_view bytes, SoupBuilder& out, ReadReport& report) {
   out.set_immediate_index_check(true);
   SoupImporter importer(out);
   importer.on_declared([&](std::size_t vertices, std::size_t faces) {
-    const std::size_t left = buffer.size() - buffer.position();
-    if (vertices * kMinVertexText + faces * kMinFaceText > left + 1) {
-      out.fail("header declares " + std::to_string(vertices) + " vertices and " +
-               std::to_string(faces) + " faces but only " + std::to_string(left) + " bytes follow");
-    }
-    if (vertices > out.limits().max_vertices) {
-      out.fail_limit("header declares " + std::to_string(vertices) + " vertices, more than " +
-                     std::to_string(out.limits().max_vertices));
-    }
-    if (faces > out.limits().max_triangles) {
-      out.fail_limit("header declares " + std::to_string(faces) + " faces, more than " +
-                     std::to_string(out.limits().max_triangles) + " triangles");
-    }
+    check_declared_counts(out, vertices, faces, kMinVertexText, kMinFaceText,
+                          buffer.size() - buffer.position());
   });
   const PolygonSoup& soup = out.soup();
   auto describe_failure = [&] {

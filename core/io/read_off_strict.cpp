@@ -43,24 +43,6 @@ void read_counts(const std::vector<std::string_view>& tokens, SoupBuilder& out,
   faces = static_cast<std::size_t>(nf);
 }
 
-void check_declared(SoupBuilder& out, std::size_t vertices, std::size_t faces,
-                    std::size_t min_vertex_bytes, std::size_t min_face_bytes, std::size_t left) {
-  // Compare in floating point so that absurd counts cannot overflow.
-  if (double(vertices) * double(min_vertex_bytes) + double(faces) * double(min_face_bytes) >
-      double(left) + 1.0) {
-    out.fail("header declares " + std::to_string(vertices) + " vertices and " +
-             std::to_string(faces) + " faces but only " + std::to_string(left) + " bytes follow");
-  }
-  if (vertices > out.limits().max_vertices) {
-    out.fail_limit("header declares " + std::to_string(vertices) + " vertices, more than " +
-                   std::to_string(out.limits().max_vertices));
-  }
-  if (faces > out.limits().max_triangles) {
-    out.fail_limit("header declares " + std::to_string(faces) + " faces, more than " +
-                   std::to_string(out.limits().max_triangles) + " triangles");
-  }
-}
-
 void read_text(std::string_view bytes, const OffHeader& h, SoupBuilder& out) {
   LineScanner lines(bytes, h.counts_on_keyword_line ? h.keyword_end : h.line_end);
   std::size_t line_no = line_of_offset(bytes, h.keyword_offset);
@@ -84,7 +66,7 @@ void read_text(std::string_view bytes, const OffHeader& h, SoupBuilder& out) {
   }
   std::size_t nv = 0, nf = 0;
   read_counts(tokens, out, nv, nf);
-  check_declared(out, nv, nf, 6, 8, bytes.size() - lines.offset());
+  check_declared_counts(out, nv, nf, 6, 8, bytes.size() - lines.offset());
 
   const std::size_t fixed = 3 + (h.normals ? 3 : 0);
   const std::size_t texture = h.texcoords ? 2 : 0;
@@ -166,7 +148,7 @@ void read_binary(std::string_view bytes, const OffHeader& h, SoupBuilder& out, R
   report.variant = big ? "OFF BINARY (big endian)" : "OFF BINARY (little endian)";
   const std::size_t nv = u32(pos, big), nf = u32(pos + 4, big);
   pos += 12;
-  check_declared(out, nv, nf, 4 * vertex_floats, 16, left);
+  check_declared_counts(out, nv, nf, 4 * vertex_floats, 16, left);
   auto f32 = [&](std::size_t at) {
     const std::uint32_t x = u32(at, big);
     float f;

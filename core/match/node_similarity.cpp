@@ -8,13 +8,6 @@ namespace arg {
 
 namespace {
 
-template <std::size_t N>
-double histogram_min(const std::array<float, N>& x, const std::array<float, N>& y) {
-  double s = 0;
-  for (std::size_t k = 0; k < N; ++k) s += std::min(x[k], y[k]);
-  return s;
-}
-
 template <class A, class B>
 double sim_terms(const A& m, const B& n, double a, double l, double v, const Weights& w) {
   double s = w.alpha_s * a + w.beta_s * l;

@@ -18,6 +18,14 @@ struct NodeMass {
   void add(const ArgNode& n);
 };
 
+// Sum of bin-wise minima of two histograms: how much of them two nodes share.
+template <std::size_t N>
+double histogram_min(const std::array<float, N>& x, const std::array<float, N>& y) {
+  double s = 0;
+  for (std::size_t k = 0; k < N; ++k) s += x[k] < y[k] ? x[k] : y[k];
+  return s;
+}
+
 // sim(m, n) = alpha_s min(a) + beta_s min(l) + lambda_1 min(v) + lambda_2 min(cords)
 //           + lambda_3 (min(curv_mean) + min(curv_gauss)) / 2 + lambda_4 min(colour) / 3,
 // a histogram min being the sum of bin-wise minima. sim(m, m) is the node's own mass.

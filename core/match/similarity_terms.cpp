@@ -10,16 +10,7 @@
 
 namespace arg {
 
-namespace {
-
-template <std::size_t N>
-double histogram_min(const std::array<float, N>& x, const std::array<float, N>& y) {
-  double s = 0;
-  for (std::size_t k = 0; k < N; ++k) s += std::min(x[k], y[k]);
-  return s;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 SimilarityTerms similarity_terms(const ArgGraph& a, const ArgGraph& b, const Weights& weights,
                                  const std::vector<MatchPair>& matches) {
