@@ -28,7 +28,7 @@ DATA = extension/arg.control $(wildcard extension/arg--*.sql)
 PGFILEDESC = "arg - Augmented Reeb Graphs for 3D shape search"
 
 REGRESS = $(sort $(basename $(notdir $(wildcard sql/*.sql))))
-REGRESS_OPTS = --outputdir=$(BUILD_DIR)/regress
+REGRESS_OPTS = --outputdir=$(BUILD_DIR)/regress --load-extension=cube
 
 PG_CPPFLAGS = -Icore -I/usr/include/eigen3 -DARG_VERSION='"$(EXTVERSION)"' -D_USE_MATH_DEFINES
 PG_CXXFLAGS = -std=c++17 -Wextra -Wno-unused-parameter -Wno-missing-field-initializers \

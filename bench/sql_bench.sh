@@ -43,7 +43,7 @@ seconds() {
 }
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
-run -c 'CREATE EXTENSION arg' -c 'SELECT arg_version()' -tA
+run -c 'CREATE EXTENSION arg CASCADE' -c 'SELECT arg_version()' -tA
 
 echo "== generating $models models (resolution $resolution)"
 gen_s=$(seconds -c "

@@ -253,3 +253,125 @@ CREATE FUNCTION arg_version() RETURNS text
   AS 'MODULE_PATHNAME', 'arg_version' LANGUAGE C STABLE PARALLEL SAFE;
 
 COMMENT ON FUNCTION arg_version() IS 'version of the arg extension and of the binary format it writes';
+
+-- Large catalogues: two-stage search ----------------------------------------------------------
+--
+-- A compact global descriptor per ARG (98 values of the core's search descriptor: weighted level
+-- sums of curvature, cords, node counts, the largest node areas and colour) as a cube point,
+-- so that a GiST index (contrib cube; with btree_gist for filter columns) returns candidates in
+-- order of the taxicab distance <#>, which arg_sim then ranks exactly:
+--
+--   CREATE INDEX ON objects USING gist (arg_global(descr));
+--   WITH candidates AS MATERIALIZED (
+--     SELECT id, descr FROM objects
+--     ORDER BY arg_global(descr) <#> arg_global($1) LIMIT 1000)
+--   SELECT id, descr <~> $1 AS sim FROM candidates ORDER BY sim LIMIT 10;
+--
+-- In 98 dimensions GiST boxes overlap and a KNN scan reads much of the index; scanning a stored
+-- column (glob cube GENERATED ALWAYS AS (arg_global(descr)) STORED; ORDER BY glob <#> ...) is
+-- faster for hundreds of candidates (docs/BENCHMARKS.md "Scale").
+--
+-- Taxicab rather than Euclidean: SIM's numerator sums bin-wise minima, and |x - y| =
+-- x + y - 2 min(x, y), so the taxicab distance of two level sums is what their minima lose
+-- (README "Large catalogues"; docs/BENCHMARKS.md "Scale" for the recall of each).
+
+CREATE FUNCTION arg_global_vector(arg) RETURNS float8[]
+  AS 'MODULE_PATHNAME', 'arg_global_vector' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 20;
+
+COMMENT ON FUNCTION arg_global_vector(arg) IS
+  'the 98-value global descriptor of an ARG (weighted level sums of its features), for candidate search';
+
+-- A C function rather than SQL over cube(float8[]): no search_path lookup at run time (an index
+-- expression must also work where pg_restore empties the search_path), one call per row. The
+-- value is built as contrib/cube's public header (cubedata.h) lays it out, and equals
+-- cube(arg_global_vector(a)).
+CREATE FUNCTION arg_global(arg) RETURNS cube
+  AS 'MODULE_PATHNAME', 'arg_global' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 20;
+
+COMMENT ON FUNCTION arg_global(arg) IS
+  'the global descriptor as a cube point: index it with GiST and order candidates by <#> (taxicab)';
+
+-- The two-stage query over any table, as one call:
+--   SELECT (o).id, (o).title, sim
+--   FROM arg_knn(NULL::objects, 'descr', $1, 10, filter => '{"museum": "M7"}') AS k(o, sim);
+-- tbl: NULL cast to the table's row type (it names the table, as in jsonb_populate_record);
+-- col: the arg column; candidates: how many the first stage returns for <~> to rank (default
+-- 100 k, at least 1000; never fewer than k); filter: a jsonb object of column = value conditions (a JSON null means
+-- IS NULL), quoted as identifiers and literals, never read as SQL; descriptor: a cube column
+-- holding arg_global(col) (say GENERATED ALWAYS AS (arg_global(descr)) STORED), scanned
+-- instead of computing arg_global(col) per row. Without it the candidates come from a GiST
+-- index on arg_global(col) (or on (museum, arg_global(col)) with btree_gist): the function
+-- turns enable_seqscan off for its query, as the planner prices each index probe like a random
+-- read and would otherwise compute arg_global for every row once candidates is more than a few
+-- percent of the table. Under a filter it still returns min(k, matching rows) rows. Ties in
+-- sim are broken by the arg's canonical order.
+CREATE FUNCTION arg_knn(tbl anyelement, col name, query arg, k int DEFAULT 10,
+                        candidates int DEFAULT NULL, filter jsonb DEFAULT NULL,
+                        descriptor name DEFAULT NULL)
+  RETURNS TABLE (obj anyelement, sim float8)
+  LANGUAGE plpgsql STABLE
+  SET search_path FROM CURRENT
+  ROWS 10
+AS $$
+DECLARE
+  relid oid;
+  conditions text := '';
+  nearest text;
+  gq cube;
+  seqscan text := current_setting('enable_seqscan');
+  item record;
+BEGIN
+  SELECT c.oid INTO relid FROM pg_type t JOIN pg_class c ON c.oid = t.typrelid
+  WHERE t.oid = pg_typeof(tbl) AND c.relkind IN ('r', 'p', 'v', 'm', 'f');
+  IF relid IS NULL THEN
+    RAISE EXCEPTION 'arg_knn: tbl must be NULL cast to a table''s row type, as in NULL::objects'
+      USING ERRCODE = 'invalid_parameter_value';
+  END IF;
+  IF k IS NULL OR k < 1 THEN
+    RAISE EXCEPTION 'arg_knn: k must be at least 1' USING ERRCODE = 'invalid_parameter_value';
+  END IF;
+  IF query IS NULL OR col IS NULL THEN
+    RETURN;
+  END IF;
+  gq := arg_global(query);
+  IF NOT EXISTS (SELECT FROM pg_attribute a WHERE a.attrelid = relid AND a.attname = col
+                   AND a.attnum > 0 AND NOT a.attisdropped AND a.atttypid = pg_typeof(query)) THEN
+    RAISE EXCEPTION 'arg_knn: % has no column % of type arg', relid::regclass, quote_ident(col)
+      USING ERRCODE = 'undefined_column';
+  END IF;
+  IF descriptor IS NOT NULL AND NOT EXISTS (
+       SELECT FROM pg_attribute a WHERE a.attrelid = relid AND a.attname = descriptor
+         AND a.attnum > 0 AND NOT a.attisdropped AND a.atttypid = pg_typeof(gq)) THEN
+    RAISE EXCEPTION 'arg_knn: % has no column % of type cube', relid::regclass, quote_ident(descriptor)
+      USING ERRCODE = 'undefined_column';
+  END IF;
+  IF filter IS NOT NULL THEN
+    IF jsonb_typeof(filter) <> 'object' THEN
+      RAISE EXCEPTION 'arg_knn: filter must be a jsonb object of column: value pairs'
+        USING ERRCODE = 'invalid_parameter_value';
+    END IF;
+    FOR item IN SELECT key, value FROM jsonb_each(filter) ORDER BY key LOOP
+      conditions := conditions || CASE
+        WHEN jsonb_typeof(item.value) = 'null' THEN format(' AND t.%I IS NULL', item.key)
+        ELSE format(' AND t.%I = %L', item.key, item.value #>> '{}') END;
+    END LOOP;
+  END IF;
+  IF descriptor IS NULL THEN
+    nearest := format('arg_global(t.%I)', col);
+    PERFORM set_config('enable_seqscan', 'off', true);
+  ELSE
+    nearest := format('t.%I', descriptor);
+  END IF;
+  RETURN QUERY EXECUTE format(
+    'SELECT c.r, (c.r).%1$I <~> $1 AS sim
+     FROM (SELECT t AS r FROM %2$s t WHERE t.%1$I IS NOT NULL%3$s
+           ORDER BY %4$s <#> $2 LIMIT $3) c
+     ORDER BY sim, (c.r).%1$I LIMIT $4',
+    col, relid::regclass, conditions, nearest)
+  USING query, gq, greatest(coalesce(candidates, greatest(100 * k, 1000)), k), k;
+  PERFORM set_config('enable_seqscan', seqscan, true);
+END
+$$;
+
+COMMENT ON FUNCTION arg_knn(anyelement, name, arg, int, int, jsonb, name) IS
+  'two-stage search: the candidates nearest by arg_global (GiST index, or a stored descriptor column) by <#>, ranked exactly by <~>; returns (row, sim), best first';

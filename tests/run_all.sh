@@ -4,6 +4,7 @@
 #   regression  pg_regress on sql/ + expected/ (make installcheck)
 #   pgtap       pg_prove on tests/pgtap/*.sql
 #   round trips tests/sql_roundtrip.sh: pg_dump/pg_restore and COPY (FORMAT binary) of arg values
+#   shards      tests/scale/shards.sh: postgres_fdw, a coordinator and two shards (its own clusters)
 # The SQL suites run on a throwaway cluster that this script starts and always stops. A suite that
 # cannot run at all counts as one failure, never as zero tests. Exits non-zero on any failure.
 # Expects the build and `make install` done (make test does both first).
@@ -117,6 +118,16 @@ fi
 # Stop the cluster before the summary so that the summary stays the last line.
 tools/pg/cluster.sh stop "$pgdir" --remove || suite "cluster shutdown" 0 1
 trap - EXIT
+
+# --- sharding with postgres_fdw (three clusters of its own) ---------------------------------
+banner "shards (postgres_fdw)"
+tests/scale/shards.sh 2>&1 | tee "$logs/shards.log"
+rc=${PIPESTATUS[0]}
+passed=$(grep -cE '^ok [0-9]+' "$logs/shards.log")
+failed=$(grep -cE '^not ok [0-9]+' "$logs/shards.log")
+[[ $rc -ne 0 && $failed -eq 0 ]] && failed=1
+[[ $((passed + failed)) -eq 0 ]] && failed=1
+suite "shards (postgres_fdw)" "$passed" "$failed"
 
 banner "summary"
 printf '%s\n' "${summary[@]}"

@@ -47,7 +47,7 @@ q -d postgres -c "CREATE DATABASE $src" -c "CREATE DATABASE $dst" >/dev/null || 
 # The source: a museum table whose ARG is a generated column, a plain arg column holding the
 # same values (dumped as text), weights, and a row without a mesh.
 q -d "$src" >/dev/null <<'SQL' || exit 1
-CREATE EXTENSION arg;
+CREATE EXTENSION arg CASCADE;
 CREATE TABLE objects (
   id     int PRIMARY KEY,
   title  text,

@@ -1,7 +1,7 @@
 -- The SQL contract of the extension: its objects, their signatures and their markings.
 BEGIN;
-CREATE EXTENSION IF NOT EXISTS arg;
-SELECT plan(146);
+CREATE EXTENSION IF NOT EXISTS arg CASCADE;
+SELECT plan(156);
 
 SELECT has_extension('arg', 'the arg extension is installed');
 SELECT has_type('arg', 'type arg exists');
@@ -75,6 +75,10 @@ INSERT INTO surface VALUES
   ('arg_info(arg)', 'jsonb', true),
   ('arg_svg(arg,integer)', 'text', true),
   ('arg_generate_model(text,integer,integer)', 'bytea', true),
+  ('arg_global_vector(arg)', 'double precision[]', true),
+  ('arg_global(arg)', 'cube', true),
+  ('arg_knn(anyelement,name,arg,integer,integer,jsonb,name)',
+   'TABLE(obj anyelement, sim double precision)', false),
   ('arg_index_trigger()', 'trigger', false),
   ('arg_version()', 'text', false);
 
@@ -99,6 +103,9 @@ FROM surface s JOIN pg_proc p ON p.oid = s.sig WHERE s.pure ORDER BY s.sig::text
 SELECT volatility_is('arg_index_trigger', '{}'::name[], 'volatile',
                      'arg_index_trigger() is a volatile trigger function');
 SELECT volatility_is('arg_version', '{}'::name[], 'stable', 'arg_version() is STABLE');
+SELECT is((SELECT provolatile FROM pg_proc
+           WHERE oid = 'arg_knn(anyelement,name,arg,integer,integer,jsonb,name)'::regprocedure), 's',
+          'arg_knn (it reads a table) is STABLE');
 
 -- Defaults: weights default to the arg preset (stored as its canonical text), options to none,
 -- the generator's resolution to 32.

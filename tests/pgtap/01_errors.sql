@@ -1,7 +1,7 @@
 -- Every class of bad input fails with its SQLSTATE, and after each failure the same session
 -- still answers a query: no C++ exception and no crash crosses into PostgreSQL.
 BEGIN;
-CREATE EXTENSION IF NOT EXISTS arg;
+CREATE EXTENSION IF NOT EXISTS arg CASCADE;
 SELECT plan(43);
 
 CREATE TEMP TABLE session AS SELECT pg_backend_pid() AS pid;

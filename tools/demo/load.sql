@@ -8,7 +8,7 @@
 SET client_min_messages = warning;
 DROP TABLE IF EXISTS museum_models;
 DROP EXTENSION IF EXISTS arg CASCADE;
-CREATE EXTENSION arg;
+CREATE EXTENSION arg CASCADE;
 
 CREATE TABLE museum_models (
   id           integer PRIMARY KEY,      -- position in the catalogue

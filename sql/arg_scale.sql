@@ -1,0 +1,133 @@
+-- arg_scale: two-stage search for large catalogues. arg_global(descr) is a compact descriptor
+-- (a cube point) that a GiST index orders by the taxicab distance <#>; the nearest candidates
+-- are then ranked exactly by <~>. arg_knn does both in one call. (The arg extension requires
+-- cube: CREATE EXTENSION arg CASCADE installs it; pg_regress loads it for these tests.)
+
+CREATE EXTENSION arg;
+
+CREATE TABLE museum_objects (
+  id     int PRIMARY KEY,
+  museum text NOT NULL,
+  class  text NOT NULL,
+  descr  arg
+);
+INSERT INTO museum_objects
+SELECT i, 'M' || (i % 4 + 1), c.class, arg_build(arg_generate_model(c.class, i / 9, 16))
+FROM generate_series(0, 35) AS i,
+     LATERAL (SELECT (ARRAY['vase', 'cup', 'amphora', 'torus', 'fourleg', 'human', 'table',
+                            'chair', 'octopus'])[i % 9 + 1] AS class) AS c;
+INSERT INTO museum_objects VALUES (100, 'M1', 'not scanned', NULL);
+ANALYZE museum_objects;
+
+-- The descriptor: 98 values, the same as a float8[] and as a cube point; a model is at
+-- distance 0 from itself; NULL in, NULL out.
+SELECT array_length(arg_global_vector(descr), 1) AS values,
+       cube_dim(arg_global(descr)) AS cube_dims,
+       arg_global(descr) = cube(arg_global_vector(descr)) AS same_values,
+       arg_global(descr) <#> arg_global(descr) AS self_distance
+FROM museum_objects WHERE id = 0;
+SELECT count(*) AS all_equal FROM museum_objects
+WHERE arg_global(descr) = cube(arg_global_vector(descr));
+SELECT arg_global(descr) IS NULL AS null_gives_null FROM museum_objects WHERE id = 100;
+SELECT bool_and(x >= 0) AS all_non_negative
+FROM museum_objects, unnest(arg_global_vector(descr)) AS x;
+
+-- Nearer by <#> means more alike by SIM: the nearest candidates of a vase are vases.
+SELECT o.id, o.class
+FROM museum_objects o, museum_objects q
+WHERE q.id = 0 AND o.id <> 0
+ORDER BY arg_global(o.descr) <#> arg_global(q.descr), o.id LIMIT 3;
+
+-- A GiST index on the descriptor answers the candidates query in distance order.
+CREATE INDEX museum_objects_global ON museum_objects USING gist (arg_global(descr));
+SET enable_seqscan = off;
+SET plan_cache_mode = force_generic_plan;  -- plans for any query model, as from a client
+PREPARE candidates(arg, int) AS
+  SELECT id FROM museum_objects ORDER BY arg_global(descr) <#> arg_global($1) LIMIT $2;
+EXPLAIN (COSTS OFF) EXECUTE candidates(NULL, 10);
+SELECT descr AS q FROM museum_objects WHERE id = 0 \gset
+SELECT array_agg(id) = (SELECT array_agg(id ORDER BY d, id) FROM (
+         SELECT id, arg_global(descr) <#> arg_global(:'q') AS d FROM museum_objects
+         WHERE descr IS NOT NULL ORDER BY d LIMIT 10) s) AS index_order_is_distance_order
+FROM (SELECT id FROM museum_objects
+      ORDER BY arg_global(descr) <#> arg_global(:'q'), id LIMIT 10) i;
+
+RESET enable_seqscan;
+
+-- The two-stage query as a CTE: candidates from the index, ranked exactly. With as many
+-- candidates as rows it is brute force; with fewer it is an approximation that is usually
+-- right (docs/BENCHMARKS.md "Scale" measures how often).
+CREATE TABLE brute AS
+SELECT id, descr <~> :'q' AS sim FROM museum_objects
+WHERE descr IS NOT NULL ORDER BY descr <~> :'q', id LIMIT 5;
+SELECT count(*) AS same_as_brute_force
+FROM (WITH c AS MATERIALIZED (
+        SELECT id, descr FROM museum_objects
+        ORDER BY arg_global(descr) <#> arg_global(:'q') LIMIT 36)
+      SELECT id, descr <~> :'q' AS sim FROM c ORDER BY sim, id LIMIT 5) two_stage
+JOIN brute USING (id, sim);
+
+-- arg_knn: the same in one call, rows of the table and their SIM, best first.
+SELECT (o).id, (o).class, round(sim::numeric, 6) = round((SELECT sim FROM brute WHERE id = (o).id)::numeric, 6) AS sim_as_brute
+FROM arg_knn(NULL::museum_objects, 'descr', :'q', 5, candidates => 36) AS k(o, sim);
+SELECT count(*) AS rows_with_default_candidates, min(sim) AS best
+FROM arg_knn(NULL::museum_objects, 'descr', :'q');
+
+SHOW enable_seqscan;  -- arg_knn turns it off for its own query only
+
+-- A stored descriptor column: the first stage scans it instead of computing arg_global(descr)
+-- for every row (faster than GiST in 98 dimensions, where boxes overlap; docs/BENCHMARKS.md).
+ALTER TABLE museum_objects ADD COLUMN glob cube GENERATED ALWAYS AS (arg_global(descr)) STORED;
+SELECT count(*) AS same_answer_as_the_index
+FROM arg_knn(NULL::museum_objects, 'descr', :'q', 5, 10, descriptor => 'glob') AS a(o, sim)
+JOIN arg_knn(NULL::museum_objects, 'descr', :'q', 5, 10) AS b(o, sim)
+  ON (a.o).id = (b.o).id AND a.sim = b.sim;
+
+-- Under a filter it still returns k rows (when that many match), all of them matching.
+SELECT count(*) AS rows, bool_and((o).museum = 'M2') AS all_in_m2
+FROM arg_knn(NULL::museum_objects, 'descr', :'q', 5, 5, '{"museum": "M2"}') AS k(o, sim);
+SELECT count(*) AS one_vase_in_m3
+FROM arg_knn(NULL::museum_objects, 'descr', :'q', 5, 5, '{"museum": "M3", "class": "vase"}');
+SELECT (o).id AS unscanned_rows_never_rank
+FROM arg_knn(NULL::museum_objects, 'descr', :'q', 5, 5, '{"class": "not scanned"}') AS k(o, sim);
+
+-- A filter is data, never SQL: keys are quoted as identifiers, values as literals.
+\set VERBOSITY terse
+SELECT count(*) FROM arg_knn(NULL::museum_objects, 'descr', :'q', 5, 5,
+                             '{"museum": "M2'' OR true --"}');
+SELECT count(*) FROM arg_knn(NULL::museum_objects, 'descr', :'q', 5, 5,
+                             '{"museum = museum OR true": "M2"}');
+SELECT count(*) FROM arg_knn(NULL::museum_objects, 'descr', :'q', 5, 5, '["museum", "M2"]');
+SELECT count(*) FROM arg_knn(NULL::int, 'descr', :'q');
+SELECT count(*) FROM arg_knn(NULL::museum_objects, 'class', :'q');
+SELECT count(*) FROM arg_knn(NULL::museum_objects, 'descr', :'q', descriptor => 'descr');
+SELECT count(*) FROM arg_knn(NULL::museum_objects, 'descr', :'q', 0);
+SELECT count(*) AS still_there FROM museum_objects;
+\set VERBOSITY default
+
+-- With btree_gist, one GiST index holds the filter column and the descriptor, so a selective
+-- filter is applied inside the index scan.
+CREATE EXTENSION btree_gist;
+CREATE INDEX museum_objects_museum_global ON museum_objects
+  USING gist (museum, arg_global(descr));
+PREPARE in_museum(text, arg) AS
+  SELECT id FROM museum_objects WHERE museum = $1
+  ORDER BY arg_global(descr) <#> arg_global($2) LIMIT 10;
+SET enable_seqscan = off;
+SET enable_bitmapscan = off;  -- on a table this small the planner would rather sort 9 rows
+EXPLAIN (COSTS OFF) EXECUTE in_museum('M2', NULL);
+RESET enable_seqscan;
+RESET enable_bitmapscan;
+
+-- The index expression needs no search_path (pg_restore runs with an empty one).
+SET search_path = '';
+CREATE INDEX museum_objects_global_again ON public.museum_objects
+  USING gist (public.arg_global(descr));
+RESET search_path;
+
+RESET plan_cache_mode;
+DEALLOCATE candidates;
+DEALLOCATE in_museum;
+DROP TABLE museum_objects, brute;
+DROP EXTENSION btree_gist;
+DROP EXTENSION arg;

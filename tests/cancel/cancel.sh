@@ -1,0 +1,171 @@
+#!/usr/bin/env bash
+# Cancellation: statement_timeout = '1s' and pg_cancel_backend stop a long arg_build (a mesh of a
+# million triangles), a long ranking (every pair of a 1,000-row table) and a long part matching
+# with SQLSTATE 57014 within 2 s of the start (or within 1 s of pg_cancel_backend), the session
+# answers afterwards, a cancelled INSERT through a generated column leaves no row, and a
+# transaction goes on after ROLLBACK TO SAVEPOINT.
+#
+#   tests/cancel/cancel.sh      against the server in PGHOST/PGPORT/PGUSER (a superuser)
+#
+# Prints TAP lines ("ok N - ...", "not ok N - ...") with the measured times, and exits non-zero
+# when one fails. tests/run_all.sh runs it on its throwaway cluster (about 40 s).
+set -uo pipefail
+
+db=arg_cancel
+limit_ms=2000        # statement_timeout is 1 s: the error must arrive within 2 s of the start
+cancel_limit_ms=1000 # and within 1 s of pg_cancel_backend
+work=$(mktemp -d)
+q() { psql -X -q -v ON_ERROR_STOP=1 -tA "$@"; }
+cleanup() {
+  PGOPTIONS='-c client_min_messages=warning' psql -X -q -d postgres \
+    -c "DROP DATABASE IF EXISTS $db WITH (FORCE)" >/dev/null 2>&1
+  rm -rf "$work"
+}
+trap cleanup EXIT
+
+n=0 failed=0
+result() {  # result OK DESCRIPTION (OK: 1 or 0)
+  n=$((n + 1))
+  if [[ $1 == 1 ]]; then echo "ok $n - $2"; else echo "not ok $n - $2"; failed=$((failed + 1)); fi
+}
+now_ms() { date +%s%3N; }
+
+echo "1..9"
+PGOPTIONS='-c client_min_messages=warning' psql -X -q -d postgres -c "DROP DATABASE IF EXISTS $db WITH (FORCE)" >/dev/null
+q -d postgres -c "CREATE DATABASE $db" >/dev/null || exit 1
+
+# Fixtures: a torus of 1000 x 500 vertices (500,000 vertices, 1,000,000 triangles, 38 MB of OFF,
+# stored uncompressed so that reading it costs little), and a catalogue of 1,000 ARGs (40 models
+# at resolution 8, each 25 times).
+setup_started=$(now_ms)
+PGOPTIONS="-c client_min_messages=warning" q -d "$db" >/dev/null <<'SQL' || exit 1
+CREATE EXTENSION arg CASCADE;
+CREATE TABLE big_mesh (mesh bytea);
+ALTER TABLE big_mesh ALTER mesh SET STORAGE EXTERNAL;
+INSERT INTO big_mesh
+WITH g AS (SELECT 1000 AS nu, 500 AS nv)
+SELECT convert_to(format(E'OFF\n%s %s 0\n', nu * nv, 2 * nu * nv), 'UTF8')
+  || (SELECT convert_to(string_agg(format('%s %s %s', ((2 + cos(v)) * cos(u))::real,
+                                          ((2 + cos(v)) * sin(u))::real, sin(v)::real),
+                                   E'\n' ORDER BY i, j) || E'\n', 'UTF8')
+      FROM g, generate_series(0, nu - 1) i, generate_series(0, nv - 1) j,
+           LATERAL (SELECT 2 * pi() * i / nu AS u, 2 * pi() * j / nv AS v) a)
+  || (SELECT convert_to(string_agg(format(E'3 %s %s %s\n3 %s %s %s',
+                                          i * nv + j, ((i + 1) % nu) * nv + j, ((i + 1) % nu) * nv + (j + 1) % nv,
+                                          i * nv + j, ((i + 1) % nu) * nv + (j + 1) % nv, i * nv + (j + 1) % nv),
+                                   E'\n' ORDER BY i, j) || E'\n', 'UTF8')
+      FROM g, generate_series(0, nu - 1) i, generate_series(0, nv - 1) j)
+FROM g;
+CREATE TABLE catalogue (id serial PRIMARY KEY, descr arg);
+INSERT INTO catalogue (descr)
+SELECT d FROM (SELECT arg_build(arg_generate_model(c, v, 8)) AS d
+               FROM unnest(ARRAY['vase', 'cup', 'amphora', 'torus', 'fourleg', 'human', 'table', 'chair']) c,
+                    generate_series(0, 4) v) m, generate_series(1, 25);
+ANALYZE catalogue;
+CREATE TABLE objects (id int, mesh bytea, descr arg GENERATED ALWAYS AS (arg_build(mesh)) STORED);
+CREATE TABLE journal (step int);
+SQL
+triangles=$(q -d "$db" -c "SELECT split_part(split_part(convert_from(substr(mesh, 1, 40), 'UTF8'), E'\n', 2), ' ', 2) FROM big_mesh")
+echo "# fixtures in $(( $(now_ms) - setup_started )) ms: a mesh of $triangles triangles, 1,000 catalogue rows"
+
+build_sql="SELECT arg_build(mesh) IS NOT NULL FROM big_mesh"
+rank_sql="SELECT a.id, b.id, a.descr <~> b.descr AS sim FROM catalogue a, catalogue b ORDER BY sim LIMIT 10"
+part_sql="SELECT count(*) FROM catalogue a, catalogue b, LATERAL arg_part_match(a.descr, 2, 0, b.descr) p"
+
+# Runs STATEMENT under statement_timeout = '1s' in one session, then asks that session for its
+# backend pid. Sets: state (SQLSTATE of the statement), ms (its time as psql measured it) and
+# alive (1 when the same session answered afterwards).
+timed() {
+  local out
+  out=$(psql -X -d "$db" 2>&1 <<SQL
+\set VERBOSITY sqlstate
+SELECT 'pid:' || pg_backend_pid();
+SET statement_timeout = '1s';
+\timing on
+$1;
+\timing off
+RESET statement_timeout;
+SELECT 'pid:' || pg_backend_pid();
+SQL
+)
+  state=$(sed -nE 's/^ERROR: +([0-9A-Z]{5}).*/\1/p' <<<"$out" | head -n 1)
+  [[ -n "$state" ]] || state=00000
+  ms=$(sed -nE 's/^Time: ([0-9.]+) ms.*/\1/p' <<<"$out" | head -n 1)
+  ms=${ms%.*}
+  local pids
+  pids=$(grep -c '^ *pid:' <<<"$out")
+  alive=0
+  [[ $pids -eq 2 && $(grep '^ *pid:' <<<"$out" | sort -u | wc -l) -eq 1 ]] && alive=1
+  [[ -n "$ms" ]] || ms=999999
+}
+
+for case in "build:arg_build of a mesh of $triangles triangles:$build_sql" \
+            "rank:ranking every pair of 1,000 ARGs (ORDER BY <~> LIMIT 10):$rank_sql" \
+            "part:part matching every pair of 1,000 ARGs:$part_sql"; do
+  IFS=: read -r _ what sql <<<"$case"
+  timed "$sql"
+  result "$([[ $state == 57014 && $ms -le $limit_ms && $alive == 1 ]] && echo 1)" \
+    "statement_timeout = '1s' stops $what: SQLSTATE $state after $ms ms, the session answers after"
+done
+
+# pg_cancel_backend from a second session, once the statement has run for a second.
+cancelled() {  # SQL WHAT
+  local sql=$1 what=$2 pid="" started cancel_at end_at delay
+  (PGAPPNAME=arg_cancel_probe psql -X -d "$db" -v VERBOSITY=sqlstate -c "$sql" >"$work/probe.out" 2>&1
+   now_ms >"$work/probe.end") &
+  local probe=$!
+  started=$(now_ms)
+  while [[ $(( $(now_ms) - started )) -lt 20000 ]]; do
+    pid=$(q -d postgres -c "SELECT pid FROM pg_stat_activity WHERE application_name = 'arg_cancel_probe'
+                            AND state = 'active' AND now() - query_start > interval '1 s'")
+    [[ -n "$pid" ]] && break
+    sleep 0.05
+  done
+  if [[ -z "$pid" ]]; then
+    wait "$probe"
+    result 0 "pg_cancel_backend stops $what: the statement never ran for a second"
+    return
+  fi
+  cancel_at=$(now_ms)
+  q -d postgres -c "SELECT pg_cancel_backend($pid)" >/dev/null
+  wait "$probe"
+  end_at=$(cat "$work/probe.end")
+  delay=$((end_at - cancel_at))
+  state=$(sed -nE 's/^ERROR: +([0-9A-Z]{5}).*/\1/p' "$work/probe.out" | head -n 1)
+  result "$([[ $state == 57014 && $delay -le $cancel_limit_ms ]] && echo 1)" \
+    "pg_cancel_backend stops $what: SQLSTATE ${state:-none} $delay ms after the cancel"
+}
+cancelled "$build_sql" "arg_build of a mesh of $triangles triangles"
+cancelled "$rank_sql" "ranking every pair of 1,000 ARGs"
+
+# A cancelled INSERT through the generated column leaves no row.
+timed "INSERT INTO objects (id, mesh) SELECT 1, mesh FROM big_mesh"
+rows=$(q -d "$db" -c "SELECT count(*) FROM objects")
+result "$([[ $state == 57014 && $ms -le $limit_ms && $rows == 0 ]] && echo 1)" \
+  "a cancelled INSERT whose generated column builds the ARG: SQLSTATE $state after $ms ms, $rows rows written"
+
+# In a transaction: the cancelled statement rolls back to its savepoint and the transaction goes on.
+out=$(psql -X -d "$db" -v VERBOSITY=sqlstate 2>&1 <<'SQL'
+BEGIN;
+INSERT INTO journal VALUES (1);
+SAVEPOINT before_build;
+SET LOCAL statement_timeout = '1s';
+INSERT INTO objects (id, mesh) SELECT 2, mesh FROM big_mesh;
+ROLLBACK TO SAVEPOINT before_build;
+INSERT INTO journal VALUES (2);
+INSERT INTO objects (id, mesh) SELECT 3, arg_generate_model('cup', 0, 8);
+COMMIT;
+SQL
+)
+state=$(sed -nE 's/^ERROR: +([0-9A-Z]{5}).*/\1/p' <<<"$out" | head -n 1)
+journal=$(q -d "$db" -c "SELECT string_agg(step::text, ',' ORDER BY step) FROM journal")
+objects=$(q -d "$db" -c "SELECT string_agg(id || ':' || (arg_info(descr) IS NOT NULL), ',' ORDER BY id) FROM objects")
+result "$([[ $state == 57014 && $journal == "1,2" && $objects == "3:true" ]] && echo 1)" \
+  "after ROLLBACK TO SAVEPOINT the transaction goes on: cancel $state, journal $journal, objects $objects (id:built)"
+result "$(grep -q '^COMMIT' <<<"$out" && echo 1)" "that transaction commits"
+
+# Nothing is left running: no backend of this database is still active.
+active=$(q -d postgres -c "SELECT count(*) FROM pg_stat_activity WHERE datname = '$db' AND state = 'active'")
+result "$([[ $active == 0 ]] && echo 1)" "no statement is left running after the cancels ($active active)"
+
+[[ $failed -eq 0 ]]
