@@ -74,7 +74,7 @@ FORCE:
 
 # Top-level targets --------------------------------------------------------------------------
 
-.PHONY: deps cmake-all build test demo demo-stop distclean
+.PHONY: deps cmake-all build test fuzz demo demo-stop distclean
 
 deps:
 	tools/pg/install_deps.sh
@@ -92,6 +92,10 @@ test: deps
 	$(SUDO) $(MAKE) --no-print-directory install ARG_NO_CMAKE=1
 	tests/run_all.sh
 
+# Every libFuzzer target for FUZZ_SECONDS each (default 20), clang with ASan + UBSan in build-fuzz/.
+fuzz: deps
+	FUZZ_SECONDS=$(or $(FUZZ_SECONDS),20) tests/fuzz/run_fuzz.sh
+
 demo: deps
 	$(MAKE) --no-print-directory build
 	$(SUDO) $(MAKE) --no-print-directory install ARG_NO_CMAKE=1
@@ -102,4 +106,4 @@ demo-stop:
 
 distclean: demo-stop
 	tools/pg/cluster.sh stop $(BUILD_DIR)/pg-test --remove
-	rm -rf $(BUILD_DIR) .deps
+	rm -rf $(BUILD_DIR) build-asan build-fuzz .deps

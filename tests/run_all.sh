@@ -4,7 +4,12 @@
 #   regression  pg_regress on sql/ + expected/ (make installcheck)
 #   pgtap       pg_prove on tests/pgtap/*.sql
 #   round trips tests/sql_roundtrip.sh: pg_dump/pg_restore and COPY (FORMAT binary) of arg values
+#   cancel      tests/cancel/cancel.sh: statement_timeout and pg_cancel_backend stop long statements
+#   server log  no backend of the throwaway cluster died ("terminated by signal") during the above
 #   shards      tests/scale/shards.sh: postgres_fdw, a coordinator and two shards (its own clusters)
+#   sanitizers  the unit tests again, built with ASan + UBSan in build-asan/
+#   fuzz        every libFuzzer target for FUZZ_SECONDS (default 20) seconds (clang, build-fuzz/)
+# ARG_QUICK=1 skips the sanitizer build and the fuzz run (the slow part: about 15 minutes).
 # The SQL suites run on a throwaway cluster that this script starts and always stops. A suite that
 # cannot run at all counts as one failure, never as zero tests. Exits non-zero on any failure.
 # Expects the build and `make install` done (make test does both first).
@@ -31,20 +36,43 @@ count() { sed -nE "s/$2/\1/p" "$1" | head -n 1; }
 
 banner() { printf '\n=== %s\n' "$*"; }
 
+# Records a CTest run from its log: ctest_suite NAME LOG EXIT_STATUS.
+ctest_suite() {
+  local failed all
+  # "100% tests passed, 0 tests failed out of 12"
+  failed=$(count "$2" '^[0-9]+% tests passed, ([0-9]+) tests? failed out of [0-9]+.*')
+  all=$(count "$2" '^[0-9]+% tests passed, [0-9]+ tests? failed out of ([0-9]+).*')
+  if [[ -z "$failed" || -z "$all" ]]; then
+    suite "$1" 0 1
+  else
+    [[ $3 -ne 0 && $failed -eq 0 ]] && failed=1 all=$((all + 1))
+    suite "$1" $((all - failed)) "$failed"
+  fi
+}
+
+# Runs a script that prints TAP lines ("ok N", "not ok N") and records them:
+# tap_script NAME LOGNAME CAN_RUN COMMAND... (CAN_RUN 0: the suite counts as one failure).
+tap_script() {
+  local name=$1 log=$logs/$2.log can_run=$3 rc passed failed
+  shift 3
+  if [[ $can_run -ne 1 ]]; then
+    suite "$name" 0 1
+    return
+  fi
+  "$@" 2>&1 | tee "$log"
+  rc=${PIPESTATUS[0]}
+  passed=$(grep -cE '^ok [0-9]+' "$log")
+  failed=$(grep -cE '^not ok [0-9]+' "$log")
+  [[ $rc -ne 0 && $failed -eq 0 ]] && failed=1
+  [[ $((passed + failed)) -eq 0 ]] && failed=1
+  suite "$name" "$passed" "$failed"
+}
+
 # --- unit tests -----------------------------------------------------------------------------
 banner "unit tests (ctest)"
 ctest --test-dir "$build" --output-on-failure --no-tests=error --timeout 900 -j "$(nproc)" \
   2>&1 | tee "$logs/ctest.log"
-rc=${PIPESTATUS[0]}
-# "100% tests passed, 0 tests failed out of 12"
-failed=$(count "$logs/ctest.log" '^[0-9]+% tests passed, ([0-9]+) tests? failed out of [0-9]+.*')
-all=$(count "$logs/ctest.log" '^[0-9]+% tests passed, [0-9]+ tests? failed out of ([0-9]+).*')
-if [[ -z "$failed" || -z "$all" ]]; then
-  suite "unit tests (ctest)" 0 1
-else
-  [[ $rc -ne 0 && $failed -eq 0 ]] && failed=1 all=$((all + 1))
-  suite "unit tests (ctest)" $((all - failed)) "$failed"
-fi
+ctest_suite "unit tests (ctest)" "$logs/ctest.log" "${PIPESTATUS[0]}"
 
 # --- the throwaway cluster ------------------------------------------------------------------
 banner "throwaway cluster"
@@ -101,18 +129,22 @@ else
   suite "pgTAP tests (pg_prove)" 0 1
 fi
 
-# --- dump/restore and binary COPY round trips -----------------------------------------------
+# --- scripts that print TAP lines on the throwaway cluster -----------------------------------
 banner "round trips (pg_dump, COPY)"
-if [[ $cluster_up -eq 1 ]]; then
-  tests/sql_roundtrip.sh 2>&1 | tee "$logs/roundtrip.log"
-  rc=${PIPESTATUS[0]}
-  passed=$(grep -cE '^ok [0-9]+' "$logs/roundtrip.log")
-  failed=$(grep -cE '^not ok [0-9]+' "$logs/roundtrip.log")
-  [[ $rc -ne 0 && $failed -eq 0 ]] && failed=1
-  [[ $((passed + failed)) -eq 0 ]] && failed=1
-  suite "round trips (pg_dump, COPY)" "$passed" "$failed"
+tap_script "round trips (pg_dump, COPY)" roundtrip "$cluster_up" tests/sql_roundtrip.sh
+
+banner "cancellation (statement_timeout, pg_cancel_backend)"
+tap_script "cancellation" cancel "$cluster_up" tests/cancel/cancel.sh
+
+# --- the server survived everything above ---------------------------------------------------
+banner "server log"
+if [[ $cluster_up -eq 1 && -f "$pgdir/postgres.log" ]]; then
+  crashes=$(grep -cE 'terminated by signal|server process .* was terminated|PANIC:' "$pgdir/postgres.log")
+  echo "server log: $crashes backend crashes ($pgdir/postgres.log)"
+  grep -E 'terminated by signal|server process .* was terminated|PANIC:' "$pgdir/postgres.log" | head -n 5
+  if [[ $crashes -eq 0 ]]; then suite "server log: no crash" 1 0; else suite "server log: no crash" 0 1; fi
 else
-  suite "round trips (pg_dump, COPY)" 0 1
+  suite "server log: no crash" 0 1
 fi
 
 # Stop the cluster before the summary so that the summary stays the last line.
@@ -121,13 +153,37 @@ trap - EXIT
 
 # --- sharding with postgres_fdw (three clusters of its own) ---------------------------------
 banner "shards (postgres_fdw)"
-tests/scale/shards.sh 2>&1 | tee "$logs/shards.log"
-rc=${PIPESTATUS[0]}
-passed=$(grep -cE '^ok [0-9]+' "$logs/shards.log")
-failed=$(grep -cE '^not ok [0-9]+' "$logs/shards.log")
-[[ $rc -ne 0 && $failed -eq 0 ]] && failed=1
-[[ $((passed + failed)) -eq 0 ]] && failed=1
-suite "shards (postgres_fdw)" "$passed" "$failed"
+tap_script "shards (postgres_fdw)" shards 1 tests/scale/shards.sh
+
+# --- sanitizers and fuzz smoke (skipped with ARG_QUICK=1) -------------------------------------
+if [[ "${ARG_QUICK:-0}" == 1 ]]; then
+  echo "ARG_QUICK=1: skipping the sanitizer build and the fuzz smoke run"
+else
+  # The unit tests again, built with AddressSanitizer and UndefinedBehaviorSanitizer.
+  banner "unit tests under ASan + UBSan"
+  asan=${ASAN_BUILD_DIR:-build-asan}
+  if cmake -S . -B "$asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARG_SANITIZE=ON \
+       -DARG_BUILD_BENCH=OFF -DARG_WERROR=OFF >"$logs/asan-configure.log" 2>&1 &&
+     cmake --build "$asan" -j "$(nproc)" >"$logs/asan-build.log" 2>&1; then
+    ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+      ctest --test-dir "$asan" --output-on-failure --no-tests=error --timeout 1800 -j "$(nproc)" \
+      2>&1 | tee "$logs/asan.log" | grep -vE '^ *[0-9]+/[0-9]+ Test +#[0-9]+: .* Passed'
+    ctest_suite "unit tests under ASan + UBSan" "$logs/asan.log" "${PIPESTATUS[0]}"
+  else
+    tail -n 30 "$logs/asan-configure.log" "$logs/asan-build.log"
+    suite "unit tests under ASan + UBSan" 0 1
+  fi
+
+  # Every libFuzzer target for FUZZ_SECONDS (20 s) from its committed corpus.
+  banner "fuzz smoke run (${FUZZ_SECONDS:-20} s per target)"
+  FUZZ_SECONDS=${FUZZ_SECONDS:-20} tests/fuzz/run_fuzz.sh 2>&1 | tee "$logs/fuzz.log"
+  rc=${PIPESTATUS[0]}
+  passed=$(grep -cE '^fuzz_[a-z_]+ .* ok, nothing found$' "$logs/fuzz.log")
+  failed=$(grep -cE '^fuzz_[a-z_]+ .* CRASH' "$logs/fuzz.log")
+  [[ $rc -ne 0 && $failed -eq 0 ]] && failed=1
+  [[ $((passed + failed)) -eq 0 ]] && failed=1
+  suite "fuzz smoke run" "$passed" "$failed"
+fi
 
 banner "summary"
 printf '%s\n' "${summary[@]}"

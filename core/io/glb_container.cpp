@@ -125,6 +125,19 @@ void check_gltf_json(const GlbChunks& chunks) {
       buffer_length.push_back(n);
     }
   }
+  // An image is either in a buffer view or a data: URI; any other URI would be a file name
+  // that tinygltf would try to open on the server.
+  if (const auto images = doc.find("images"); images != doc.end()) {
+    if (!images->is_array()) fail_json("'images' is not an array");
+    for (std::size_t i = 0; i < images->size(); ++i) {
+      const nlohmann::json& image = (*images)[i];
+      const std::string what = "image " + std::to_string(i);
+      if (!image.is_object()) fail_json(what + " is not an object");
+      const auto uri = image.find("uri");
+      if (uri != image.end() && (!uri->is_string() || !is_data_uri(uri->get<std::string>())))
+        fail_json(what + " refers to an external file, which is not supported");
+    }
+  }
   if (const auto views = doc.find("bufferViews"); views != doc.end()) {
     if (!views->is_array()) fail_json("'bufferViews' is not an array");
     for (std::size_t i = 0; i < views->size(); ++i) {

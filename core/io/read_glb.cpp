@@ -32,6 +32,26 @@ bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::st
   return true;
 }
 
+// tinygltf opens files named by URIs; the server's file system is never an input, so every
+// file operation fails (check_gltf_json already rejects such URIs; this is the second guard).
+bool no_file_exists(const std::string&, void*) {
+  return false;
+}
+std::string no_expand_path(const std::string&, void*) {
+  return {};
+}
+bool no_read_file(std::vector<unsigned char>*, std::string* error, const std::string&, void*) {
+  if (error) *error = "external files are not supported";
+  return false;
+}
+bool no_write_file(std::string* error, const std::string&, const std::vector<unsigned char>&,
+                   void*) {
+  if (error) *error = "external files are not supported";
+  return false;
+}
+const tinygltf::FsCallbacks kNoFileSystem{&no_file_exists, &no_expand_path, &no_read_file,
+                                          &no_write_file, nullptr};
+
 Eigen::Matrix4d local_transform(const tinygltf::Node& node, const std::string& what) {
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
   if (node.matrix.size() == 16) {
@@ -332,6 +352,7 @@ void read_glb(std::string_view bytes, SoupBuilder& out, ReadReport& report) {
   report.variant = "glTF 2.0 binary";
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&keep_encoded_image, nullptr);
+  loader.SetFsCallbacks(kNoFileSystem);
   tinygltf::Model model;
   std::string error, warning;
   if (!loader.LoadBinaryFromMemory(&model, &error, &warning,

@@ -238,15 +238,27 @@ TEST(ReadGlb, VertexColoursAndMaterialColours) {
 }
 
 TEST(ReadGlb, AnUnusableTextureIsAWarningNotAnError) {
+  const std::string garbage = cube_glb(
+      kOneNode +
+          ",\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":0}}}],"
+          "\"textures\":[{\"source\":0}],"
+          "\"images\":[{\"uri\":\"data:image/png;base64,AAECAwQFBgc=\"}]",
+      ",\"material\":0");
+  ReadReport report;
+  const Mesh mesh = read_mesh(garbage, {}, &report);
+  EXPECT_EQ(mesh.F.rows(), 12);
+  EXPECT_FALSE(report.warnings.empty());
+}
+
+// A URI that is not data: names a file on the server, which is never opened.
+TEST(ReadGlb, AnImageInAnExternalFileIsRejectedWithoutOpeningIt) {
   const std::string external = cube_glb(
       kOneNode +
           ",\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":0}}}],"
           "\"textures\":[{\"source\":0}],\"images\":[{\"uri\":\"/etc/passwd\"}]",
       ",\"material\":0");
-  ReadReport report;
-  const Mesh mesh = read_mesh(external, {}, &report);
-  EXPECT_EQ(mesh.F.rows(), 12);
-  EXPECT_FALSE(report.warnings.empty());
+  const std::string message = error_of(external);
+  EXPECT_NE(message.find("image 0 refers to an external file"), std::string::npos) << message;
 }
 
 TEST(ReadGlb, HostileNodeGraphsAreInputErrors) {

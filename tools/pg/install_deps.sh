@@ -12,6 +12,8 @@ packages=(
   libcli11-dev
   # build and test tools
   cmake g++ make clang-format libgtest-dev libbenchmark-dev
+  # libFuzzer targets and the sanitizer runtimes (tests/fuzz)
+  clang libclang-rt-14-dev
 )
 
 if [[ "${ARG_SKIP_DEPS:-0}" == 1 ]]; then exit 0; fi
