@@ -1,17 +1,22 @@
 -- arg 0.1.0: Augmented Reeb Graphs of 3D meshes, built, compared and inspected in SQL.
 --
 -- Every pure function is IMMUTABLE STRICT PARALLEL SAFE, so it can feed a generated column and
--- run in parallel plans. COST is in units of cpu_operator_cost, taken as 2.5 us of one core
--- (cpu_operator_cost = 0.0025 with seq_page_cost = 1 read as 1 ms). Measured per call in the
--- server (bench/sql_bench.sh: 1,000 generated models at resolution 32, about 7k triangles, on
--- a shared 2-core machine) and with Google Benchmark (build/arg_bench):
---   arg_build            24 ms per insert (40 ms for 11k triangles in BM_WholeBuild)  COST 20000
---   arg_generate_model   20 ms                                                        COST 8000
---   arg_sim, <~>,        48 us per row of a ranking: detoasting the stored value      COST 20
---     arg_matches          ~15 us, reading its graph ~7 us, matching 7-27 us
---   arg_part_match       37 us per candidate (node at level 2; finer levels more)     COST 40
---   arg_nodes 68 us, arg_svg 57 us, arg_info 41 us                              COST 30, 25, 16
---   arg_in 250 us, arg_out 200 us (base64 and the full check), arg_recv ~60 us   COST 100, 80, 25
+-- run in parallel plans. COST is in units of cpu_operator_cost (0.0025 of a sequential page
+-- read). Reading an 8 kB page sequentially takes about 10 us, so one unit is about 25 ns: the
+-- planner then weighs a comparison against the pages it reads as they really compare, and runs
+-- a ranking in parallel workers (and walks a GiST index rather than computing arg_global for
+-- every row) when that pays. Measured per call in the server (bench/sql_bench.sh: 1,000 generated
+-- models at resolution 32, about 7k triangles, on a shared 2-core machine; tests/scale for
+-- arg_global) and with Google Benchmark (build/arg_bench):
+--   arg_build            24 ms per insert (40 ms for 11k triangles in BM_WholeBuild)  COST 1000000
+--   arg_generate_model   20 ms                                                        COST 800000
+--   arg_sim, <~>,        48 us per row of a ranking: detoasting the stored value      COST 2000
+--     arg_matches          ~15 us, reading its graph ~7 us, matching 7-27 us          COST 600
+--   arg_part_match       37 us per candidate (node at level 2; finer levels more)     COST 1500
+--   arg_global(_vector)  ~40 us: detoasting the stored value                         COST 1600
+--   arg_nodes 68 us, arg_svg 57 us, arg_info 41 us                        COST 2700, 2300, 1600
+--   arg_in 250 us, arg_out 200 us (base64 and the full check), arg_recv ~60 us
+--                                                                         COST 10000, 8000, 2400
 
 -- complain if script is sourced in psql, rather than via CREATE EXTENSION
 \echo Use "CREATE EXTENSION arg" to load this file. \quit
@@ -21,13 +26,13 @@
 CREATE TYPE arg;
 
 CREATE FUNCTION arg_in(cstring) RETURNS arg
-  AS 'MODULE_PATHNAME', 'arg_in' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 100;
+  AS 'MODULE_PATHNAME', 'arg_in' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 10000;
 
 CREATE FUNCTION arg_out(arg) RETURNS cstring
-  AS 'MODULE_PATHNAME', 'arg_out' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 80;
+  AS 'MODULE_PATHNAME', 'arg_out' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 8000;
 
 CREATE FUNCTION arg_recv(internal) RETURNS arg
-  AS 'MODULE_PATHNAME', 'arg_recv' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 25;
+  AS 'MODULE_PATHNAME', 'arg_recv' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 2400;
 
 CREATE FUNCTION arg_send(arg) RETURNS bytea
   AS 'MODULE_PATHNAME', 'arg_send' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE;
@@ -156,13 +161,13 @@ COMMENT ON TYPE arg_weights IS
 -- Building ----------------------------------------------------------------------------------
 
 CREATE FUNCTION arg_build(mesh bytea, options text DEFAULT '') RETURNS arg
-  AS 'MODULE_PATHNAME', 'arg_build_mesh' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 20000;
+  AS 'MODULE_PATHNAME', 'arg_build_mesh' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 1000000;
 
 COMMENT ON FUNCTION arg_build(bytea, text) IS
   'ARG of a mesh (OFF, OBJ, PLY, STL or GLB, detected); options like ''levels=5 mu=geodesic base_points=128''';
 
 CREATE FUNCTION arg_build(mesh bytea, texture bytea, options text DEFAULT '') RETURNS arg
-  AS 'MODULE_PATHNAME', 'arg_build_textured' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 20000;
+  AS 'MODULE_PATHNAME', 'arg_build_textured' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 1000000;
 
 COMMENT ON FUNCTION arg_build(bytea, bytea, text) IS
   'ARG of a mesh whose texture image (PNG, JPEG, ...) is kept outside it, as OBJ does';
@@ -179,13 +184,13 @@ COMMENT ON FUNCTION arg_index_trigger() IS
 -- Comparing ---------------------------------------------------------------------------------
 
 CREATE FUNCTION arg_sim(a arg, b arg, weights arg_weights DEFAULT 'arg') RETURNS float8
-  AS 'MODULE_PATHNAME', 'arg_sim' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 20;
+  AS 'MODULE_PATHNAME', 'arg_sim' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 2000;
 
 COMMENT ON FUNCTION arg_sim(arg, arg, arg_weights) IS
   'SIM(a, b) in [0, 1], 0 for the same shape, symmetric';
 
 CREATE FUNCTION arg_distance(a arg, b arg) RETURNS float8
-  AS 'MODULE_PATHNAME', 'arg_distance' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 20;
+  AS 'MODULE_PATHNAME', 'arg_distance' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 2000;
 
 COMMENT ON FUNCTION arg_distance(arg, arg) IS 'arg_sim(a, b) with the default weights; the <~> operator';
 
@@ -201,7 +206,7 @@ COMMENT ON OPERATOR <~> (arg, arg) IS 'shape dissimilarity (SIM with default wei
 CREATE FUNCTION arg_matches(a arg, b arg, weights arg_weights DEFAULT 'arg')
   RETURNS TABLE (level int, a_node int, b_node int, match_group int, loss float8, sim float8)
   AS 'MODULE_PATHNAME', 'arg_matches' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE
-  COST 20 ROWS 40;
+  COST 600 ROWS 40;
 
 COMMENT ON FUNCTION arg_matches(arg, arg, arg_weights) IS
   'the node pairs matched to compute arg_sim(a, b, weights); nodes are numbered within their level';
@@ -210,7 +215,7 @@ CREATE FUNCTION arg_part_match(query arg, level int, node int, candidate arg,
                                weights arg_weights DEFAULT 'arg')
   RETURNS TABLE (candidate_level int, candidate_node int, score float8)
   AS 'MODULE_PATHNAME', 'arg_part_match' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE
-  COST 40 ROWS 5;
+  COST 1500 ROWS 5;
 
 COMMENT ON FUNCTION arg_part_match(arg, int, int, arg, arg_weights) IS
   'nodes of candidate (at level and the levels next to it) whose parts match node of query at level, best (lowest score) first';
@@ -221,19 +226,19 @@ CREATE FUNCTION arg_nodes(arg)
   RETURNS TABLE (level int, node int, parent int, area real, mu_min real, mu_max real,
                  r real, theta real, phi real, volume real)
   AS 'MODULE_PATHNAME', 'arg_nodes' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE
-  COST 30 ROWS 60;
+  COST 2700 ROWS 60;
 
 COMMENT ON FUNCTION arg_nodes(arg) IS
   'one row per node: level, index within the level, parent''s index within level - 1, and attributes';
 
 CREATE FUNCTION arg_info(arg) RETURNS jsonb
-  AS 'MODULE_PATHNAME', 'arg_info' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 16;
+  AS 'MODULE_PATHNAME', 'arg_info' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 1600;
 
 COMMENT ON FUNCTION arg_info(arg) IS
   'levels, nodes per level, genus estimate, triangles, build options and builder version of an ARG';
 
 CREATE FUNCTION arg_svg(arg, level int DEFAULT 2) RETURNS text
-  AS 'MODULE_PATHNAME', 'arg_svg' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 25;
+  AS 'MODULE_PATHNAME', 'arg_svg' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 2300;
 
 COMMENT ON FUNCTION arg_svg(arg, int) IS 'the Reeb graph of one level as a self-contained SVG picture';
 
@@ -242,7 +247,7 @@ COMMENT ON FUNCTION arg_svg(arg, int) IS 'the Reeb graph of one level as a self-
 CREATE FUNCTION arg_generate_model(class text, variant int, resolution int DEFAULT 32)
   RETURNS bytea
   AS 'MODULE_PATHNAME', 'arg_generate_model' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE
-  COST 8000;
+  COST 800000;
 
 COMMENT ON FUNCTION arg_generate_model(text, int, int) IS
   'OFF bytes of a deterministic generated model: class vase, cup, amphora, torus, fourleg, human, table, chair or octopus; any variant in [0, 999999]; resolution in [8, 128] grid cells';
@@ -276,7 +281,7 @@ COMMENT ON FUNCTION arg_version() IS 'version of the arg extension and of the bi
 -- (README "Large catalogues"; docs/BENCHMARKS.md "Scale" for the recall of each).
 
 CREATE FUNCTION arg_global_vector(arg) RETURNS float8[]
-  AS 'MODULE_PATHNAME', 'arg_global_vector' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 20;
+  AS 'MODULE_PATHNAME', 'arg_global_vector' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 1600;
 
 COMMENT ON FUNCTION arg_global_vector(arg) IS
   'the 98-value global descriptor of an ARG (weighted level sums of its features), for candidate search';
@@ -286,7 +291,7 @@ COMMENT ON FUNCTION arg_global_vector(arg) IS
 -- value is built as contrib/cube's public header (cubedata.h) lays it out, and equals
 -- cube(arg_global_vector(a)).
 CREATE FUNCTION arg_global(arg) RETURNS cube
-  AS 'MODULE_PATHNAME', 'arg_global' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 20;
+  AS 'MODULE_PATHNAME', 'arg_global' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 1600;
 
 COMMENT ON FUNCTION arg_global(arg) IS
   'the global descriptor as a cube point: index it with GiST and order candidates by <#> (taxicab)';
@@ -362,10 +367,13 @@ BEGIN
   ELSE
     nearest := format('t.%I', descriptor);
   END IF;
+  -- The row value is formed only for the candidates, after the LIMIT: a whole-row reference
+  -- in the scan itself would detoast every ARG the first stage looks at.
   RETURN QUERY EXECUTE format(
     'SELECT c.r, (c.r).%1$I <~> $1 AS sim
-     FROM (SELECT t AS r FROM %2$s t WHERE t.%1$I IS NOT NULL%3$s
-           ORDER BY %4$s <#> $2 LIMIT $3) c
+     FROM (SELECT ROW(s.*)::%2$s AS r
+           FROM (SELECT t.* FROM %2$s t WHERE t.%1$I IS NOT NULL%3$s
+                 ORDER BY %4$s <#> $2 LIMIT $3) s) c
      ORDER BY sim, (c.r).%1$I LIMIT $4',
     col, relid::regclass, conditions, nearest)
   USING query, gq, greatest(coalesce(candidates, greatest(100 * k, 1000)), k), k;
