@@ -61,8 +61,9 @@ tap_script() {
   fi
   "$@" 2>&1 | tee "$log"
   rc=${PIPESTATUS[0]}
-  passed=$(grep -cE '^ok [0-9]+' "$log")
-  failed=$(grep -cE '^not ok [0-9]+' "$log")
+  passed=$(grep -cE '^[[:space:]]*ok [0-9]+' "$log")
+  failed=$(grep -cE '^[[:space:]]*not ok [0-9]+' "$log")
+  # A script that died or broke its plan has rc != 0 without a "not ok" line.
   [[ $rc -ne 0 && $failed -eq 0 ]] && failed=1
   [[ $((passed + failed)) -eq 0 ]] && failed=1
   suite "$name" "$passed" "$failed"
@@ -113,21 +114,14 @@ fi
 banner "pgTAP tests (pg_prove)"
 shopt -s nullglob
 tap_files=(tests/pgtap/*.sql)
+can_prove=0
 if [[ $cluster_up -eq 1 && ${#tap_files[@]} -gt 0 ]] &&
   PGOPTIONS='-c client_min_messages=warning' psql -X -q -d postgres -v ON_ERROR_STOP=1 \
     -c 'DROP DATABASE IF EXISTS arg_tap' \
     -c 'CREATE DATABASE arg_tap' && psql -X -q -d arg_tap -c 'CREATE EXTENSION pgtap'; then
-  pg_prove --verbose -d arg_tap "${tap_files[@]}" 2>&1 | tee "$logs/pgtap.log"
-  rc=${PIPESTATUS[0]}
-  passed=$(grep -cE '^[[:space:]]*ok [0-9]+' "$logs/pgtap.log")
-  failed=$(grep -cE '^[[:space:]]*not ok [0-9]+' "$logs/pgtap.log")
-  # A file that died or broke its plan has rc != 0 without a "not ok" line.
-  [[ $rc -ne 0 && $failed -eq 0 ]] && failed=1
-  [[ $((passed + failed)) -eq 0 ]] && failed=1
-  suite "pgTAP tests (pg_prove)" "$passed" "$failed"
-else
-  suite "pgTAP tests (pg_prove)" 0 1
+  can_prove=1
 fi
+tap_script "pgTAP tests (pg_prove)" pgtap "$can_prove" pg_prove --verbose -d arg_tap "${tap_files[@]}"
 
 # --- scripts that print TAP lines on the throwaway cluster -----------------------------------
 banner "round trips (pg_dump, COPY)"

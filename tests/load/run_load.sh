@@ -3,7 +3,7 @@
 # mixing inserts (the ARG built by a generated column from a generated mesh) with top-10 ranking
 # queries against a catalogue of 5,000 models. Checks afterwards that no transaction failed, that
 # every committed row is there with a valid arg (its text form read back equals it), that no
-# backend died, and that backend memory stayed flat after warm-up.
+# backend died, and that backend memory stayed flat after warm-up (the first half of the run).
 #
 #   tests/load/run_load.sh
 #
@@ -148,7 +148,11 @@ result "$([[ $invalid == 0 ]] && echo 1)" \
 crashes=$(grep -cE 'terminated by signal|PANIC:' "$pgdir/postgres.log")
 result "$([[ $crashes -eq 0 ]] && echo 1)" "the server log shows no crashed backend ($crashes)"
 
-# Memory: the median RssAnon over the backends, per sample; warm-up is the first minute.
+# Memory: RssAnon per backend at each minute. Eight backends sharing two cores run only a few
+# hundred transactions each in ten minutes, so their caches (catalogue, plans, allocator arenas)
+# fill for minutes: warm-up is the first half of the run, and the check compares the mean over
+# the backends at mid-run with the mean at the end. (tests/pgtap/03_memory.sql checks one
+# backend over 1,300 calls in make test.)
 say ""
 say "backend private memory (RssAnon, MB; median and max over the $clients backends) at each minute:"
 while read -r at kbs; do
@@ -157,12 +161,13 @@ while read -r at kbs; do
     END { med = (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2
           printf "  %4d s: median %.1f, max %.1f\n", at, med / 1024, v[NR] / 1024 }'
 done <"$out/rss.txt" | tee -a "$report"
-growth=$(awk 'NF > 1 { s = 0; for (i = 2; i <= NF; i++) s += $i; m = s / (NF - 1)
-                       if ($1 >= 60 && first == "") first = m; last = m }
-              END { if (first == "" || first == 0) print "?"; else printf "%.1f", 100 * (last - first) / first }' \
+growth=$(awk -v half=$((seconds / 2)) '
+           NF > 1 { s = 0; for (i = 2; i <= NF; i++) s += $i; m = s / (NF - 1)
+                    if ($1 >= half && first == "") first = m; last = m }
+           END { if (first == "" || first == 0) print "?"; else printf "%.1f", 100 * (last - first) / first }' \
          "$out/rss.txt")
-result "$([[ $growth != "?" ]] && awk -v g="$growth" 'BEGIN { exit !(g < 10) }' && echo 1)" \
-  "backend memory is flat after warm-up: mean RssAnon changed by $growth% from 60 s to the end (limit 10%)"
+result "$([[ $growth != "?" ]] && awk -v g="$growth" 'BEGIN { exit !(g < 5) }' && echo 1)" \
+  "backend memory is flat after warm-up: mean RssAnon changed by $growth% from mid-run to the end (limit 5%)"
 say "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "report: $report"
 [[ $failed -eq 0 ]]
