@@ -58,20 +58,25 @@ ctest_suite() {
 # Runs a script that prints TAP lines ("ok N", "not ok N") and records them:
 # tap_script NAME LOGNAME CAN_RUN COMMAND... (CAN_RUN 0: the suite counts as one failure).
 tap_script() {
-  local name=$1 log=$logs/$2.log can_run=$3 rc passed failed
+  local name=$1 log=$logs/$2.log can_run=$3
   shift 3
   if [[ $can_run -ne 1 ]]; then
     suite "$name" 0 1
     return
   fi
   "$@" 2>&1 | tee "$log"
-  rc=${PIPESTATUS[0]}
-  passed=$(grep -cE '^[[:space:]]*ok [0-9]+' "$log")
-  failed=$(grep -cE '^[[:space:]]*not ok [0-9]+' "$log")
-  # A script that died or broke its plan has rc != 0 without a "not ok" line.
-  [[ $rc -ne 0 && $failed -eq 0 ]] && failed=1
+  line_suite "$name" "$log" "${PIPESTATUS[0]}" '^[[:space:]]*ok [0-9]+' '^[[:space:]]*not ok [0-9]+'
+}
+
+# Records a suite from the lines of its log: line_suite NAME LOG EXIT_STATUS PASS_RE FAIL_RE.
+# A run that died (exit status not 0 without a failing line) or printed nothing is a failure.
+line_suite() {
+  local passed failed
+  passed=$(grep -cE "$4" "$2")
+  failed=$(grep -cE "$5" "$2")
+  [[ $3 -ne 0 && $failed -eq 0 ]] && failed=1
   [[ $((passed + failed)) -eq 0 ]] && failed=1
-  suite "$name" "$passed" "$failed"
+  suite "$1" "$passed" "$failed"
 }
 
 # --- unit tests -----------------------------------------------------------------------------
@@ -176,12 +181,8 @@ else
   # Every libFuzzer target for FUZZ_SECONDS (20 s) from its committed corpus.
   banner "fuzz smoke run (${FUZZ_SECONDS:-20} s per target)"
   FUZZ_SECONDS=${FUZZ_SECONDS:-20} tests/fuzz/run_fuzz.sh 2>&1 | tee "$logs/fuzz.log"
-  rc=${PIPESTATUS[0]}
-  passed=$(grep -cE '^fuzz_[a-z_]+ .* ok, nothing found$' "$logs/fuzz.log")
-  failed=$(grep -cE '^fuzz_[a-z_]+ .* CRASH' "$logs/fuzz.log")
-  [[ $rc -ne 0 && $failed -eq 0 ]] && failed=1
-  [[ $((passed + failed)) -eq 0 ]] && failed=1
-  suite "fuzz smoke run" "$passed" "$failed"
+  line_suite "fuzz smoke run" "$logs/fuzz.log" "${PIPESTATUS[0]}" \
+    '^fuzz_[a-z_]+ .* ok, nothing found$' '^fuzz_[a-z_]+ .* CRASH'
 fi
 
 banner "summary"
