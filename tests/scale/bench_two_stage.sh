@@ -19,6 +19,8 @@
 #   CANDIDATES="100 300 1000 3000"  candidate counts of the two-stage search
 #   PARALLEL_QUERIES=3          queries per worker count in the parallel measurement
 #   REUSE=1                     keep the database arg_scale_bench and its tables between runs
+#                               (and the extension as it was installed then: after changing
+#                               extension/arg--*.sql, run without REUSE)
 # Latencies are server-side wall times of each query (serial: max_parallel_workers_per_gather
 # = 0, warm caches); recall@10 is |two-stage top 10 ∩ brute-force top 10| / 10, averaged.
 set -euo pipefail
