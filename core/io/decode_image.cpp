@@ -51,6 +51,17 @@ void check_png_chunks(std::string_view b) {
   }
 }
 
+// OpenImageIO 2.4's TGA reader indexes the colour map with unchecked values (a colour-mapped
+// image with an empty map crashes it), so only true-colour and greyscale TGA reach it.
+void check_tga_header(std::string_view b) {
+  const auto u = [&](std::size_t i) { return static_cast<unsigned char>(b[i]); };
+  if (u(1) != 0 || u(2) == 1 || u(2) == 9) {
+    fail(
+        "tga: colour-mapped images are not supported (save the texture as true-colour TGA, PNG "
+        "or JPEG)");
+  }
+}
+
 }  // namespace
 
 Image decode_image(std::string_view bytes, const Limits& limits) {
@@ -61,6 +72,7 @@ Image decode_image(std::string_view bytes, const Limits& limits) {
   const char* format = sniff(bytes);
   if (!format) fail("not a PNG, JPEG, TGA or BMP image");
   if (std::string_view(format) == "png") check_png_chunks(bytes);
+  if (std::string_view(format) == "targa") check_tga_header(bytes);
   const ImageDecoder decoder = image_decoder();
   if (!decoder) throw Error("image: no image decoder is loaded (see io/image_decoder.hpp)");
   return decoder(bytes, format, limits);

@@ -110,6 +110,8 @@ void check_gltf_json(const GlbChunks& chunks) {
       if (!b.is_object()) fail_json(what + " is not an object");
       const std::uint64_t n = unsigned_member(b, "byteLength", what, UINT64_MAX);
       if (n == UINT64_MAX) fail_json(what + " has no byteLength");
+      // The specification's minimum; tinygltf indexes the first byte of an embedded buffer.
+      if (n == 0) fail_json(what + " has byteLength 0 (at least 1 is required)");
       const auto uri = b.find("uri");
       if (uri == b.end()) {
         if (i != 0) fail_json(what + " has no uri; only buffer 0 may refer to the BIN chunk");

@@ -586,7 +586,7 @@ FROM pool WHERE typ = 'bytea'::regtype AND class IN ('NULL', 'empty', 'random', 
 
 -- The run ------------------------------------------------------------------------------------
 
-SELECT plan((SELECT count(*)::int FROM cases) + 9);
+SELECT plan((SELECT count(*)::int FROM cases) + 10);
 
 -- Every mesh builds; every texture builds with the textured OBJ.
 SELECT is(count(*)::int, 8, 'the cup in OFF, PLY (ASCII and binary), STL (ASCII and binary), OBJ (with and without texture coordinates) and GLB: each builds')
@@ -594,6 +594,13 @@ FROM valid WHERE name !~ '^(BMP|TGA)$' AND arg_info(arg_build(bytes)) IS NOT NUL
 SELECT is(count(*)::int, 2, 'a BMP and a TGA texture each build with the textured OBJ')
 FROM valid t, valid m WHERE t.name IN ('BMP', 'TGA') AND m.name = 'OBJ (textured)'
   AND arg_info(arg_build(m.bytes, t.bytes)) IS NOT NULL;
+
+-- A colour-mapped RLE TGA with an empty colour map crashed OpenImageIO 2.4's reader (and with
+-- it the backend) before the texture check refused colour-mapped TGA (found by fuzzing).
+SELECT throws_ok(format('SELECT arg_build(%L::bytea, %L::bytea)', m.bytes,
+                        '\x00010914af000020600000000100000208000008'),
+                 '22023', NULL, 'a colour-mapped TGA texture is refused with 22023, before the decoder')
+FROM valid m WHERE m.name = 'OBJ (textured)';
 
 SELECT is(array_agg(sig ORDER BY sig), NULL,
           'every function of the extension has valid arguments it accepts (so each hostile argument is the only one)')

@@ -261,6 +261,20 @@ TEST(ReadGlb, AnImageInAnExternalFileIsRejectedWithoutOpeningIt) {
   EXPECT_NE(message.find("image 0 refers to an external file"), std::string::npos) << message;
 }
 
+// glTF requires byteLength >= 1; tinygltf indexes the first byte of an embedded buffer, so a
+// zero-length one is rejected before it runs (found by fuzz_read_glb).
+TEST(ReadGlb, AZeroLengthBufferIsAnInputError) {
+  std::string glb = cube_glb(kOneNode);
+  const std::string key = "\"buffers\":[{\"byteLength\":";
+  const std::size_t at = glb.find(key);
+  ASSERT_NE(at, std::string::npos);
+  std::size_t digits = at + key.size();
+  while (glb[digits] >= '0' && glb[digits] <= '9') glb[digits++] = ' ';
+  glb[at + key.size()] = '0';  // same length: the JSON chunk header stays right
+  const std::string message = error_of(glb);
+  EXPECT_NE(message.find("buffer 0 has byteLength 0"), std::string::npos) << message;
+}
+
 TEST(ReadGlb, HostileNodeGraphsAreInputErrors) {
   EXPECT_NE(error_of(cube_glb("\"nodes\":[{\"mesh\":0,\"children\":[1]},{\"children\":[0]}],"
                               "\"scenes\":[{\"nodes\":[0]}]"))

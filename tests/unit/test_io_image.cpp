@@ -108,6 +108,24 @@ TEST(IoImage, GarbageAndTruncatedImagesAreInputErrors) {
   }
 }
 
+// OpenImageIO 2.4 crashed on this 20-byte colour-mapped RLE TGA with an empty colour map
+// (found by fuzz_decode_image): colour-mapped TGA never reaches the decoder.
+TEST(IoImage, ColourMappedTgaIsRejectedBeforeTheDecoder) {
+  const std::string crash(
+      "\x00\x01\x09\x14\xaf\x00\x00\x20\x60\x00\x00\x00\x01\x00\x00\x02"
+      "\x08\x00\x00\x08",
+      20);
+  try {
+    decode_image(crash, {});
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("colour-mapped"), std::string::npos) << e.what();
+  }
+  std::string with_map = rle_tga();
+  with_map[1] = 1;  // a colour map present in a true-colour image is refused too
+  EXPECT_THROW(decode_image(with_map, {}), InputError);
+}
+
 TEST(IoImage, SamplingWrapsAndFlipsAsAsked) {
   Image image;
   image.width = 2;
