@@ -19,6 +19,7 @@
 #include "gen/generate_models.hpp"
 #include "match/similarity.hpp"
 #include "match/similarity_terms.hpp"
+#include "oiio/write_png.hpp"
 #include "reeb/slice_intervals.hpp"
 #include "render/bitmap_font.hpp"
 #include "render/colour_map.hpp"
@@ -27,7 +28,6 @@
 #include "render/match_picture.hpp"
 #include "render/render_model.hpp"
 #include "render/view_camera.hpp"
-#include "oiio/write_png.hpp"
 
 using namespace arg;
 

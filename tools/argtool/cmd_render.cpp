@@ -7,9 +7,9 @@
 #include "build/node_positions.hpp"
 #include "command_registry.hpp"
 #include "load_arg.hpp"
+#include "oiio/write_png.hpp"
 #include "render/graph_svg.hpp"
 #include "render/render_model.hpp"
-#include "oiio/write_png.hpp"
 #include "render_input.hpp"
 
 namespace {

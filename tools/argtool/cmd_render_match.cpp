@@ -12,10 +12,10 @@
 #include "load_arg.hpp"
 #include "match/similarity.hpp"
 #include "match/similarity_terms.hpp"
+#include "oiio/write_png.hpp"
 #include "render/bitmap_font.hpp"
 #include "render/match_picture.hpp"
 #include "render/render_model.hpp"
-#include "oiio/write_png.hpp"
 #include "render_input.hpp"
 
 namespace {

@@ -11,9 +11,9 @@
 #include "command_registry.hpp"
 #include "load_arg.hpp"
 #include "match/similarity.hpp"
+#include "oiio/write_png.hpp"
 #include "render/contact_sheet.hpp"
 #include "render/render_model.hpp"
-#include "oiio/write_png.hpp"
 #include "render_input.hpp"
 
 namespace {
