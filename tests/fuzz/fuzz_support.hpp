@@ -11,6 +11,7 @@
 #include "common/errors.hpp"
 #include "common/limits.hpp"
 #include "io/read_mesh.hpp"
+#include "match/similarity.hpp"
 #include "mesh/mesh.hpp"
 
 namespace arg::fuzz {
@@ -83,6 +84,16 @@ inline int fuzz_read_mesh_as(MeshFormat format, const std::uint8_t* data, std::s
   } catch (const Error&) {
   }
   return 0;
+}
+
+// Matches a graph that came from hostile bytes against a valid one, both ways, with itself and
+// by parts. Its values may be anything (NaN included): only memory safety and defined behaviour
+// are promised, so the results are not checked.
+inline void exercise_matching(const ArgGraph& graph, const ArgGraph& other) {
+  (void)arg_similarity(graph, other);
+  (void)arg_similarity(other, graph);
+  (void)arg_similarity(graph, graph);
+  (void)part_match(graph, graph.levels(), 0, other);
 }
 
 }  // namespace arg::fuzz
