@@ -34,7 +34,7 @@ PG_CPPFLAGS = -Icore -I/usr/include/eigen3 -DARG_VERSION='"$(EXTVERSION)"' -D_US
 PG_CXXFLAGS = -std=c++17 -Wextra -Wno-unused-parameter -Wno-missing-field-initializers \
               $(if $(CI),-Werror)
 # OpenImageIO is not linked: arg_image.so (built by CMake) is loaded on the first texture.
-SHLIB_LINK = $(CORE_LIB) -lOpenMeshCore -pthread -lstdc++
+SHLIB_LINK = $(CORE_LIB) -lOpenMeshCore -lz -pthread -lstdc++
 IMAGE_LIB = $(BUILD_DIR)/arg_image$(DLSUFFIX)
 
 # PGXS's LLVM bitcode rule ignores PG_CXXFLAGS (so no -std=c++17) and JIT inlining gains nothing

@@ -5,10 +5,12 @@
 #   pgtap       pg_prove on tests/pgtap/*.sql
 #   round trips tests/sql_roundtrip.sh: pg_dump/pg_restore and COPY (FORMAT binary) of arg values
 #   cancel      tests/cancel/cancel.sh: statement_timeout and pg_cancel_backend stop long statements
+#   memory      tests/oom/out_of_memory.sh: a backend out of address space gets 53200 and goes on
 #   server log  no backend of the throwaway cluster died ("terminated by signal") during the above
 #   shards      tests/scale/shards.sh: postgres_fdw, a coordinator and two shards (its own clusters)
 #   sanitizers  the unit tests again, built with ASan + UBSan in build-asan/
-#   fuzz        every libFuzzer target for FUZZ_SECONDS (default 20) seconds (clang, build-fuzz/)
+#   fuzz        every libFuzzer target for FUZZ_SECONDS (default 20) seconds from the fixed seed
+#               FUZZ_SEED (default 1), so the run is repeatable (clang, build-fuzz/)
 # ARG_QUICK=1 skips the sanitizer build and the fuzz run (the slow part: about 15 minutes).
 # The SQL suites run on a throwaway cluster that this script starts and always stops. A suite that
 # cannot run at all counts as one failure, never as zero tests. Exits non-zero on any failure.
@@ -140,6 +142,9 @@ tap_script "round trips (pg_dump, COPY)" roundtrip "$cluster_up" tests/sql_round
 banner "cancellation (statement_timeout, pg_cancel_backend)"
 tap_script "cancellation" cancel "$cluster_up" tests/cancel/cancel.sh
 
+banner "out of memory (prlimit on one backend)"
+tap_script "out of memory" oom "$cluster_up" tests/oom/out_of_memory.sh
+
 # --- the server survived everything above ---------------------------------------------------
 banner "server log"
 if [[ $cluster_up -eq 1 && -f "$pgdir/postgres.log" ]]; then
@@ -180,7 +185,7 @@ else
 
   # Every libFuzzer target for FUZZ_SECONDS (20 s) from its committed corpus.
   banner "fuzz smoke run (${FUZZ_SECONDS:-20} s per target)"
-  FUZZ_SECONDS=${FUZZ_SECONDS:-20} tests/fuzz/run_fuzz.sh 2>&1 | tee "$logs/fuzz.log"
+  FUZZ_SEED=${FUZZ_SEED:-1} FUZZ_SECONDS=${FUZZ_SECONDS:-20} tests/fuzz/run_fuzz.sh 2>&1 | tee "$logs/fuzz.log"
   line_suite "fuzz smoke run" "$logs/fuzz.log" "${PIPESTATUS[0]}" \
     '^fuzz_[a-z_]+ .* ok, nothing found$' '^fuzz_[a-z_]+ .* CRASH'
 fi

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <system_error>
 #include <thread>
 
 #include "mu/dijkstra.hpp"
@@ -89,16 +90,25 @@ std::vector<double> geodesic_integral(const Mesh& mesh, const MeshEdges& edges, 
     if (here == 1 || workers == 1) {
       for (int k = 0; k < here; ++k) run(k);
     } else {
-      std::vector<std::thread> pool;
       std::vector<std::exception_ptr> errors(static_cast<std::size_t>(here));
-      for (int k = 0; k < here; ++k)
-        pool.emplace_back([&, k] {
-          try {
-            run(k);
-          } catch (...) {
-            errors[k] = std::current_exception();
-          }
-        });
+      auto run_keeping_error = [&](int k) {
+        try {
+          run(k);
+        } catch (...) {
+          errors[std::size_t(k)] = std::current_exception();
+        }
+      };
+      std::vector<std::thread> pool;
+      pool.reserve(std::size_t(here));
+      for (int k = 0; k < here; ++k) {
+        // When no thread can be started (out of memory or of processes), this one does the
+        // work: a throw here would destroy joinable threads, which terminates the process.
+        try {
+          pool.emplace_back(run_keeping_error, k);
+        } catch (const std::system_error&) {
+          run_keeping_error(k);
+        }
+      }
       for (auto& t : pool) t.join();
       for (auto& e : errors)
         if (e) std::rethrow_exception(e);

@@ -4,6 +4,7 @@
 #   tests/fuzz/run_fuzz.sh                          every target, 20 s each
 #   FUZZ_SECONDS=1800 tests/fuzz/run_fuzz.sh        longer runs
 #   FUZZ_TARGETS="fuzz_read_ply fuzz_build" ...     only these targets
+#   FUZZ_SEED=1 tests/fuzz/run_fuzz.sh              the same mutations on every run (the test suite)
 #   FUZZ_BUILD_DIR=... FUZZ_JOBS=... FUZZ_EXTRA_ARGS="-max_len=1024" ...
 #
 # One target at a time, one process each. Each works on build-fuzz/corpus/<target>/, seeded from
@@ -52,6 +53,9 @@ for target in "${targets[@]}"; do
   touch "$start"
   args=(-max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 -print_final_stats=1
         -artifact_prefix="$artifacts/")
+  # A fixed seed makes a short run repeatable (a test must not pass or fail by chance); without
+  # one libFuzzer picks a new seed each run, which is what long runs that look for bugs want.
+  [[ -n "${FUZZ_SEED:-}" ]] && args+=(-seed="$FUZZ_SEED")
   [[ -f "$here/dict/$target.dict" ]] && args+=(-dict="$here/dict/$target.dict")
   case "$target" in
     fuzz_weights | fuzz_build_options | fuzz_arg_text) args+=(-max_len=8192) ;;

@@ -126,6 +126,88 @@ TEST(IoImage, ColourMappedTgaIsRejectedBeforeTheDecoder) {
   EXPECT_THROW(decode_image(with_map, {}), InputError);
 }
 
+std::string error_of(const std::string& bytes) {
+  try {
+    decode_image(bytes, {});
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+// A 24-bit uncompressed BMP, bottom row first: row y holds (60 x, 100, 40 y) in RGB.
+std::string bmp(int width, int height, std::uint32_t compression = 0) {
+  const int row = (3 * width + 3) / 4 * 4;
+  Bytes b;
+  b.text("BM").u32le(54 + row * height).u32le(0).u32le(54);
+  b.u32le(40).i32le(width).i32le(height).u16le(1).u16le(24).u32le(compression);
+  b.u32le(row * height).i32le(2835).i32le(2835).u32le(0).u32le(0);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) b.u8(std::uint8_t(40 * y)).u8(100).u8(std::uint8_t(60 * x));
+    for (int pad = 3 * width; pad < row; ++pad) b.u8(0);
+  }
+  return b.str();
+}
+
+TEST(IoImage, DecodesAnUncompressedBmp) {
+  const Image image = decode_image(bmp(3, 2), {});
+  ASSERT_EQ(image.width, 3);
+  ASSERT_EQ(image.height, 2);
+  EXPECT_EQ(pixel(image, 2, 1), (std::array<std::uint8_t, 3>{120, 100, 0}));
+  EXPECT_EQ(pixel(image, 1, 0), (std::array<std::uint8_t, 3>{60, 100, 40}));
+}
+
+// OpenImageIO 2.4 aborted the process (an uncaught std::length_error) on this run-length
+// encoded BMP that claims 24 bits per pixel (found by fuzz_decode_image): the BMP header is
+// checked first and only uncompressed bitmaps reach the decoder.
+TEST(IoImage, BmpLayoutIsCheckedBeforeTheDecoder) {
+  const std::string crash(
+      "BMN\0\0\0\0\0\0\0\x08\0\0\0(\0\0\0\x03\0\0\0\x02\0\0\x40\x01\0\x18\0\x01\0"
+      "\0\0\0\0\0\0\x80\x13\x0b\0\0\x13\x0b\0\0\0\0\0\0\0\0\0\0\0d\xc8<d\xc8xd\xc8"
+      "\0\0\0\xc8xd\xc8\0\0\0",
+      74);
+  EXPECT_NE(error_of(crash).find("bmp: "), std::string::npos) << error_of(crash);
+  EXPECT_NE(error_of(bmp(3, 2, 1)).find("compression method 1 is not supported"),
+            std::string::npos);
+  const std::string good = bmp(3, 2);
+  EXPECT_NE(error_of(good.substr(0, good.size() - 1)).find("3x2 pixels do not fit in 77 bytes"),
+            std::string::npos)
+      << error_of(good.substr(0, good.size() - 1));
+  std::string planes = good;
+  planes[26] = 2;
+  EXPECT_NE(error_of(planes).find("2 colour planes"), std::string::npos);
+  std::string overlap = good;
+  overlap[10] = 40;  // pixels said to start inside the info header
+  EXPECT_NE(error_of(overlap).find("overlap"), std::string::npos);
+  std::string height = good;
+  height[22] = height[23] = height[24] = height[25] = 0;
+  EXPECT_NE(error_of(height).find("no pixels"), std::string::npos);
+}
+
+TEST(IoImage, PngWithAWrongChunkChecksumIsAnInputError) {
+  std::string png = test_io::encode_image("png", 4, 4, [](int x, int y) {
+    return std::array<std::uint8_t, 3>{std::uint8_t(x), std::uint8_t(y), 0};
+  });
+  ASSERT_EQ(decode_image(png, {}).width, 4);
+  const std::size_t idat = png.find("IDAT");
+  ASSERT_NE(idat, std::string::npos);
+  png[idat + 6] = char(png[idat + 6] ^ 0x10);
+  EXPECT_NE(error_of(png).find("wrong checksum"), std::string::npos) << error_of(png);
+}
+
+TEST(IoImage, UncompressedTgaMustHoldAllItsPixels) {
+  Bytes b;
+  b.u8(0).u8(0).u8(2);
+  for (int i = 0; i < 5; ++i) b.u8(0);
+  b.u16le(0).u16le(0).u16le(2).u16le(2).u8(24).u8(0);
+  for (int i = 0; i < 4; ++i) b.u8(10).u8(20).u8(30);
+  const std::string tga = b.str();
+  EXPECT_EQ(decode_image(tga, {}).width, 2);
+  EXPECT_NE(error_of(tga.substr(0, tga.size() - 1)).find("2x2 pixels do not fit in 29 bytes"),
+            std::string::npos)
+      << error_of(tga.substr(0, tga.size() - 1));
+}
+
 TEST(IoImage, SamplingWrapsAndFlipsAsAsked) {
   Image image;
   image.width = 2;

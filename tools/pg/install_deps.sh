@@ -7,9 +7,9 @@ packages=(
   # server, headers for PGXS, contrib, pgTAP and pg_prove
   postgresql-15 postgresql-server-dev-15 postgresql-contrib postgresql-15-pgtap
   libtap-parser-sourcehandler-pgtap-perl
-  # core libraries (tinygltf's header needs nlohmann-json and stb, which its package does not pull in)
+  # core libraries (zlib checks PNG chunk checksums; tinygltf's header needs nlohmann-json and stb, which its package does not pull in)
   libeigen3-dev libopenmesh-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libopenimageio-dev
-  libcli11-dev
+  libcli11-dev zlib1g-dev
   # build and test tools
   cmake g++ make clang-format libgtest-dev libbenchmark-dev
   # libFuzzer targets and the sanitizer runtimes (tests/fuzz)

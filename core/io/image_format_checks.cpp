@@ -1,0 +1,149 @@
+// Checks of PNG, BMP and TGA byte layouts done before OpenImageIO decodes the image.
+#include "io/image_format_checks.hpp"
+
+#include <zlib.h>
+
+#include <cstdint>
+#include <string>
+
+#include "common/errors.hpp"
+
+namespace arg {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& what) {
+  throw InputError("image: " + what);
+}
+
+struct Reader {
+  std::string_view b;
+  unsigned u8(std::size_t i) const { return static_cast<unsigned char>(b[i]); }
+  std::uint32_t u16le(std::size_t i) const { return u8(i) | u8(i + 1) << 8; }
+  std::uint32_t u32le(std::size_t i) const { return u16le(i) | u16le(i + 2) << 16; }
+  std::uint32_t u32be(std::size_t i) const {
+    return std::uint32_t(u8(i)) << 24 | u8(i + 1) << 16 | u8(i + 2) << 8 | u8(i + 3);
+  }
+};
+
+// OpenImageIO 2.4's PNG reader leaks memory whenever libpng long-jumps out of a read (a chunk
+// past the end of the data, a bad checksum), so such data never reaches it.
+void check_png(std::string_view b) {
+  const Reader r{b};
+  std::size_t at = 8;
+  for (;;) {
+    if (b.size() - at < 12) fail("png: truncated data (no IEND chunk)");
+    const std::uint32_t length = r.u32be(at);
+    if (length > b.size() - at - 12) {
+      fail("png: the chunk at byte offset " + std::to_string(at) +
+           " runs past the end of the data");
+    }
+    const auto* type = reinterpret_cast<const Bytef*>(b.data() + at + 4);
+    const uLong crc = crc32(crc32(0L, Z_NULL, 0), type, uInt(4 + length));
+    if (crc != r.u32be(at + 8 + length)) {
+      fail("png: the chunk at byte offset " + std::to_string(at) + " has a wrong checksum");
+    }
+    const bool end = b.substr(at + 4, 4) == "IEND";
+    at += 12 + std::size_t(length);
+    if (end) return;
+  }
+}
+
+// Windows and OS/2 bitmaps, uncompressed (or with bit-field masks): OpenImageIO 2.4's run-length
+// decoder throws std::length_error through a C++ frame that cannot pass it on, which aborts.
+void check_bmp(std::string_view b) {
+  const Reader r{b};
+  const std::uint32_t header = r.u32le(14);
+  const bool os2 = header == 12;
+  if (!os2 && header != 40 && header != 52 && header != 56 && header != 108 && header != 124) {
+    fail("bmp: unknown info header size " + std::to_string(header));
+  }
+  if (b.size() < 14 + std::size_t(header)) fail("bmp: truncated header");
+  std::int64_t width, height;
+  std::uint32_t planes, bits, compression = 0, colours = 0;
+  if (os2) {
+    width = r.u16le(18);
+    height = r.u16le(20);
+    planes = r.u16le(22);
+    bits = r.u16le(24);
+  } else {
+    width = std::int32_t(r.u32le(18));
+    height = std::int32_t(r.u32le(22));
+    planes = r.u16le(26);
+    bits = r.u16le(28);
+    compression = r.u32le(30);
+    colours = r.u32le(46);
+  }
+  if (height < 0) height = -height;  // rows stored top first
+  if (width <= 0 || height <= 0) fail("bmp: no pixels");
+  if (planes != 1) fail("bmp: " + std::to_string(planes) + " colour planes (must be 1)");
+  if (bits != 1 && bits != 4 && bits != 8 && bits != 16 && bits != 24 && bits != 32) {
+    fail("bmp: " + std::to_string(bits) + " bits per pixel");
+  }
+  const bool masks = compression == 3 && (bits == 16 || bits == 32);
+  if (compression != 0 && !masks) {
+    fail("bmp: compression method " + std::to_string(compression) +
+         " is not supported (save the texture as uncompressed BMP, PNG or JPEG)");
+  }
+  std::uint64_t table = masks && header == 40 ? 12 : 0;
+  if (bits <= 8) {
+    const std::uint32_t most = 1u << bits;
+    if (colours > most) fail("bmp: " + std::to_string(colours) + " palette colours");
+    table += std::uint64_t(colours ? colours : most) * (os2 ? 3 : 4);
+  }
+  const std::uint64_t offset = r.u32le(10);
+  if (offset < 14 + header + table) fail("bmp: the pixels overlap the header or the palette");
+  const std::uint64_t row = (std::uint64_t(width) * bits + 31) / 32 * 4;
+  if (offset > b.size() || row * std::uint64_t(height) > b.size() - offset) {
+    fail("bmp: " + std::to_string(width) + "x" + std::to_string(height) + " pixels do not fit in " +
+         std::to_string(b.size()) + " bytes");
+  }
+}
+
+// OpenImageIO 2.4's TGA reader indexes the colour map with unchecked values (a colour-mapped
+// image with an empty map crashes it), so only true-colour and greyscale TGA reach it.
+void check_tga(std::string_view b) {
+  const Reader r{b};
+  const unsigned type = r.u8(2);
+  if (r.u8(1) != 0 || type == 1 || type == 9) {
+    fail(
+        "tga: colour-mapped images are not supported (save the texture as true-colour TGA, PNG "
+        "or JPEG)");
+  }
+  const std::uint64_t width = r.u16le(12), height = r.u16le(14), bits = r.u8(16);
+  if (width == 0 || height == 0) fail("tga: no pixels");
+  if (type == 2 || type == 3) {
+    const std::uint64_t pixels = width * height * ((bits + 7) / 8);
+    if (18 + r.u8(0) + pixels > b.size()) {
+      fail("tga: " + std::to_string(width) + "x" + std::to_string(height) +
+           " pixels do not fit in " + std::to_string(b.size()) + " bytes");
+    }
+  }
+}
+
+}  // namespace
+
+const char* sniff_image_format(std::string_view b) {
+  auto starts = [&](std::string_view magic) { return b.substr(0, magic.size()) == magic; };
+  if (starts("\x89PNG\r\n\x1a\n")) return "png";
+  if (starts("\xFF\xD8\xFF")) return "jpeg";
+  if (starts("BM") && b.size() >= 26) return "bmp";
+  // TGA has no magic number: check the header fields that have only a few legal values.
+  if (b.size() >= 18) {
+    const Reader r{b};
+    const unsigned type = r.u8(2), colour_map = r.u8(1), bits = r.u8(16);
+    const bool type_ok =
+        type == 1 || type == 2 || type == 3 || type == 9 || type == 10 || type == 11;
+    const bool bits_ok = bits == 8 || bits == 15 || bits == 16 || bits == 24 || bits == 32;
+    if (colour_map <= 1 && type_ok && bits_ok) return "targa";
+  }
+  return nullptr;
+}
+
+void check_image_layout(std::string_view bytes, std::string_view format) {
+  if (format == "png") check_png(bytes);
+  if (format == "bmp") check_bmp(bytes);
+  if (format == "targa") check_tga(bytes);
+}
+
+}  // namespace arg
