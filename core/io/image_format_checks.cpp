@@ -98,6 +98,21 @@ void check_bmp(std::string_view b) {
     fail("bmp: " + std::to_string(width) + "x" + std::to_string(height) + " pixels do not fit in " +
          std::to_string(b.size()) + " bytes");
   }
+  // OpenImageIO looks palette indices up without a bounds check: with a short palette, every
+  // index must name one of its colours.
+  if (bits <= 8 && colours != 0 && colours < (1u << bits)) {
+    for (std::uint64_t y = 0; y < std::uint64_t(height); ++y) {
+      for (std::uint64_t x = 0; x < std::uint64_t(width); ++x) {
+        const std::uint64_t bit = x * bits;
+        const unsigned byte = r.u8(std::size_t(offset + y * row + bit / 8));
+        const unsigned index = (byte >> (8 - bits - bit % 8)) & ((1u << bits) - 1);
+        if (index >= colours) {
+          fail("bmp: pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+               ") uses palette entry " + std::to_string(index) + " of " + std::to_string(colours));
+        }
+      }
+    }
+  }
 }
 
 // OpenImageIO 2.4's TGA reader indexes the colour map with unchecked values (a colour-mapped

@@ -50,8 +50,10 @@ mkdir -p "$work/arg"
 "$argtool" build --levels 3 --mu centroid --base-points 16 -o "$work/arg/torus_l3_centroid.arg" \
   "$work/stl/torus_00.stl" > /dev/null
 
-rm -rf "$corpus"
+# fuzz_arg_structure's seeds are a corpus minimised from fuzzing (committed as found, not made
+# here), so only the other targets' folders are made afresh.
 mkdir -p "$corpus"
+find "$corpus" -mindepth 1 -maxdepth 1 ! -name fuzz_arg_structure -exec rm -rf {} +
 for format in off ply stl obj; do
   mkdir -p "$corpus/fuzz_read_$format"
   for c in "${classes[@]}"; do

@@ -103,15 +103,27 @@ def tga(width, height, rle=False, grey=False, top_first=False):
     return out + body
 
 
-def bmp(width, height):
-    row = b""
-    for x in range(width):
-        row += bytes([x * 60 % 256, 100, 200])
+def bmp(width, height, bits=24, colours=0, compression=0, masks=b""):
+    """An uncompressed BMP; with bits <= 8 a palette of `colours` entries (0: all 2^bits) and
+    pixels cycling through it; with compression 3 (bit fields) the three `masks` after the
+    header."""
+    if bits <= 8:
+        entries = colours or 1 << bits
+        palette = b"".join(bytes([i * 40 % 256, i * 80 % 256, i * 120 % 256, 0])
+                           for i in range(entries))
+        bits_row = "".join(format(x % entries, "0%db" % bits) for x in range(width))
+        bits_row += "0" * (-len(bits_row) % 8)
+        row = int(bits_row, 2).to_bytes(len(bits_row) // 8, "big")
+    else:
+        palette = b""
+        row = b"".join(bytes([x * 60 % 256, 100, 200, 255][:bits // 8]) for x in range(width))
     row += b"\0" * ((4 - len(row) % 4) % 4)
     pixels = row * height
-    header = struct.pack("<2sIHHI", b"BM", 54 + len(pixels), 0, 0, 54)
-    info = struct.pack("<IiiHHIIiiII", 40, width, height, 1, 24, 0, len(pixels), 2835, 2835, 0, 0)
-    return header + info + pixels
+    offset = 54 + len(masks) + len(palette)
+    header = struct.pack("<2sIHHI", b"BM", offset + len(pixels), 0, 0, offset)
+    info = struct.pack("<IiiHHIIiiII", 40, width, height, 1, bits, compression, len(pixels), 2835,
+                       2835, colours, 0)
+    return header + info + masks + palette + pixels
 
 
 def jpeg(width, height, components=1):
@@ -164,6 +176,14 @@ def image_seeds():
         b"\x18\x00" + b"\x01\x02\x03")
     put(t, "bmp_3x2.bmp", bmp(3, 2))
     put(t, "bmp_truncated.bmp", bmp(3, 2)[:40])
+    put(t, "bmp_palette8_3_colours_5x3.bmp", bmp(5, 3, bits=8, colours=3))
+    put(t, "bmp_palette4_7x2.bmp", bmp(7, 2, bits=4))
+    put(t, "bmp_palette1_9x2.bmp", bmp(9, 2, bits=1))
+    put(t, "bmp_top_first_2x2.bmp", bmp(2, -2))
+    put(t, "bmp_bitfields32_3x2.bmp", bmp(3, 2, bits=32, compression=3,
+                                          masks=struct.pack("<III", 0xff0000, 0xff00, 0xff)))
+    put(t, "bmp_bitfields16_4x2.bmp", bmp(4, 2, bits=16, compression=3,
+                                          masks=struct.pack("<III", 0xf800, 0x7e0, 0x1f)))
     put(t, "empty", b"")
 
 

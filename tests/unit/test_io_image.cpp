@@ -184,6 +184,27 @@ TEST(IoImage, BmpLayoutIsCheckedBeforeTheDecoder) {
   EXPECT_NE(error_of(height).find("no pixels"), std::string::npos);
 }
 
+// A 4 x 2 BMP of 8-bit palette indices with a palette of two colours (red, then blue).
+std::string palette_bmp(std::uint8_t index) {
+  Bytes b;
+  b.text("BM").u32le(54 + 8 + 8).u32le(0).u32le(54 + 8);
+  b.u32le(40).i32le(4).i32le(2).u16le(1).u16le(8).u32le(0);
+  b.u32le(8).i32le(2835).i32le(2835).u32le(2).u32le(0);
+  b.u8(0).u8(0).u8(255).u8(0).u8(255).u8(0).u8(0).u8(0);  // BGRA palette
+  for (int i = 0; i < 7; ++i) b.u8(1);
+  b.u8(index);
+  return b.str();
+}
+
+// OpenImageIO reads palette entries without a bounds check, so every index is checked first.
+TEST(IoImage, BmpPaletteIndicesMustNameAColour) {
+  const Image image = decode_image(palette_bmp(0), {});
+  ASSERT_EQ(image.width, 4);
+  EXPECT_EQ(pixel(image, 0, 0), (std::array<std::uint8_t, 3>{0, 0, 255}));
+  EXPECT_EQ(pixel(image, 3, 0), (std::array<std::uint8_t, 3>{255, 0, 0}));
+  EXPECT_EQ(error_of(palette_bmp(200)), "image: bmp: pixel (3, 1) uses palette entry 200 of 2");
+}
+
 TEST(IoImage, PngWithAWrongChunkChecksumIsAnInputError) {
   std::string png = test_io::encode_image("png", 4, 4, [](int x, int y) {
     return std::array<std::uint8_t, 3>{std::uint8_t(x), std::uint8_t(y), 0};
