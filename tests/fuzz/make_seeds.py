@@ -171,6 +171,11 @@ def image_seeds():
     put(t, "tga_rgb_top_first_2x2.tga", tga(2, 2, top_first=True))
     put(t, "tga_rle_4x2.tga", tga(4, 2, rle=True))
     put(t, "tga_grey_4x1.tga", tga(4, 1, grey=True))
+    # TGA 2.0: an extension area (495 bytes, fields left zero) named by the footer.
+    plain = tga(2, 2)
+    extension = struct.pack("<H", 495) + bytes(493)
+    footer = struct.pack("<II", len(plain), 0) + b"TRUEVISION-XFILE.\0"
+    put(t, "tga_with_extension_area_2x2.tga", plain + extension + footer)
     put(t, "tga_truncated.tga", tga(4, 4)[:30])
     put(t, "tga_declares_65535x65535.tga", tga(1, 1)[:12] + struct.pack("<HH", 65535, 65535) +
         b"\x18\x00" + b"\x01\x02\x03")
