@@ -3,6 +3,7 @@
 
 #include <dlfcn.h>
 
+#include "common/signals_blocked.hpp"
 #include "io/image_decoder.hpp"
 #include "io/read_mesh.hpp"
 
@@ -16,7 +17,13 @@ void prepare_image_decoder(std::string_view mesh, std::string_view texture) {
   // Not load_external_function: arg_image.so is a plain C++ library, not a PostgreSQL module.
   char path[MAXPGPATH];
   snprintf(path, sizeof path, "%s/arg_image%s", pkglib_path, DLSUFFIX);
-  void* library = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+  void* library;
+  {
+    // Libraries under OpenImageIO start threads as they load (log4cplus, four): with every
+    // signal blocked here, no such thread can take the backend's signals.
+    const arg::SignalsBlocked while_loading;
+    library = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+  }
   if (library == nullptr)
     ereport(ERROR, (errcode(ERRCODE_UNDEFINED_FILE),
                     errmsg("cannot load the image decoder \"%s\": %s", path, dlerror())));

@@ -5,6 +5,7 @@
 #include <system_error>
 #include <thread>
 
+#include "common/signals_blocked.hpp"
 #include "mu/dijkstra.hpp"
 #include "mu/mu_function.hpp"
 #include "mu/surface_graph.hpp"
@@ -100,15 +101,20 @@ std::vector<double> geodesic_integral(const Mesh& mesh, const MeshEdges& edges, 
       };
       std::vector<std::thread> pool;
       pool.reserve(std::size_t(here));
-      for (int k = 0; k < here; ++k) {
-        // When no thread can be started (out of memory or of processes), this one does the
-        // work: a throw here would destroy joinable threads, which terminates the process.
-        try {
-          pool.emplace_back(run_keeping_error, k);
-        } catch (const std::system_error&) {
-          run_keeping_error(k);
+      std::vector<int> not_started;
+      {
+        const SignalsBlocked while_starting;  // the workers keep this mask, this thread not
+        for (int k = 0; k < here; ++k) {
+          // A thread that cannot start (out of memory or of processes) leaves its work to this
+          // one: a throw here would destroy joinable threads, which terminates the process.
+          try {
+            pool.emplace_back(run_keeping_error, k);
+          } catch (const std::system_error&) {
+            not_started.push_back(k);
+          }
         }
       }
+      for (const int k : not_started) run_keeping_error(k);
       for (auto& t : pool) t.join();
       for (auto& e : errors)
         if (e) std::rethrow_exception(e);

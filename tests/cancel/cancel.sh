@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Cancellation: statement_timeout = '1s' and pg_cancel_backend stop a long arg_build (a mesh of a
 # million triangles), a long ranking (every pair of a 1,000-row table) and a long part matching
-# with SQLSTATE 57014 within 2 s of the start (or within 1 s of pg_cancel_backend), the session
-# answers afterwards, a cancelled INSERT through a generated column leaves no row, and a
+# with SQLSTATE 57014 within 2 s of the start (or within 1 s of pg_cancel_backend, also for a
+# build on two threads in a backend that loaded the image decoder, whose other threads must all
+# block signals), the session answers afterwards, a cancelled INSERT through a generated column leaves no row, and a
 # transaction goes on after ROLLBACK TO SAVEPOINT.
 #
 #   tests/cancel/cancel.sh      against the server in PGHOST/PGPORT/PGUSER (a superuser)
@@ -30,7 +31,7 @@ result() {  # result OK DESCRIPTION (OK: 1 or 0)
 }
 now_ms() { date +%s%3N; }
 
-echo "1..9"
+echo "1..11"
 PGOPTIONS='-c client_min_messages=warning' psql -X -q -d postgres -c "DROP DATABASE IF EXISTS $db WITH (FORCE)" >/dev/null
 q -d postgres -c "CREATE DATABASE $db" >/dev/null || exit 1
 
@@ -63,6 +64,13 @@ SELECT d FROM (SELECT arg_build(arg_generate_model(c, v, 8)) AS d
                     generate_series(0, 4) v) m, generate_series(1, 25);
 ANALYZE catalogue;
 CREATE TABLE objects (id int, mesh bytea, descr arg GENERATED ALWAYS AS (arg_build(mesh)) STORED);
+-- An octahedron with texture coordinates and a 2 x 2 BMP: building it loads the image decoder.
+CREATE TABLE textured AS SELECT convert_to(
+  E'v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\n'
+  || E'vt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\nvt 0.5 0.5\nvt 0.2 0.8\n'
+  || E'f 1/1 3/3 5/5\nf 3/3 2/2 5/5\nf 2/2 4/4 5/5\nf 4/4 1/1 5/5\n'
+  || E'f 3/3 1/1 6/6\nf 2/2 3/3 6/6\nf 4/4 2/2 6/6\nf 1/1 4/4 6/6\n', 'UTF8') AS mesh,
+  '\x424d460000000000000036000000280000000200000002000000010018000000000010000000130b0000130b00000000000000000000ff000000ff00000000ff00ffffff0000'::bytea AS texture;
 CREATE TABLE journal (step int);
 SQL
 triangles=$(q -d "$db" -c "SELECT split_part(split_part(convert_from(substr(mesh, 1, 40), 'UTF8'), E'\n', 2), ' ', 2) FROM big_mesh")
@@ -108,8 +116,27 @@ for case in "build:arg_build of a mesh of $triangles triangles:$build_sql" \
     "statement_timeout = '1s' stops $what: SQLSTATE $state after $ms ms, the session answers after"
 done
 
-# pg_cancel_backend from a second session, once the statement has run for a second.
-cancelled() {  # SQL WHAT
+# Signal masks of the backend PID's threads: sets threads (how many besides the backend's own),
+# blocking (how many of those block SIGINT, the cancel signal) and main_blocks (1 when the
+# backend's own thread blocks it). Bit 1 of SigBlk is signal 2, SIGINT.
+signal_masks() {
+  local task mask
+  threads=0 blocking=0 main_blocks=1
+  for task in /proc/"$1"/task/*; do
+    mask=$(awk '/^SigBlk/ {print $2}' "$task/status" 2>/dev/null) || continue
+    [[ -n "$mask" ]] || continue
+    if [[ ${task##*/} == "$1" ]]; then
+      main_blocks=$(( (0x$mask >> 1) & 1 ))
+    else
+      threads=$((threads + 1))
+      blocking=$((blocking + ((0x$mask >> 1) & 1)))
+    fi
+  done
+}
+
+# pg_cancel_backend from a second session, once the statement has run for a second; with a
+# third argument "masks", the backend's threads' signal masks are read just before the cancel.
+cancelled() {  # SQL WHAT [masks]
   local sql=$1 what=$2 pid="" started cancel_at end_at delay
   (PGAPPNAME=arg_cancel_probe psql -X -d "$db" -v VERBOSITY=sqlstate -c "$sql" >"$work/probe.out" 2>&1
    now_ms >"$work/probe.end") &
@@ -126,6 +153,15 @@ cancelled() {  # SQL WHAT
     result 0 "pg_cancel_backend stops $what: the statement never ran for a second"
     return
   fi
+  if [[ ${3:-} == masks ]]; then  # wait (up to 20 s) for the build's worker threads to start
+    signal_masks "$pid"
+    local before=$threads
+    while [[ $threads -le $before && $(($(now_ms) - started)) -lt 20000 ]]; do
+      sleep 0.02
+      signal_masks "$pid"
+    done
+    workers=$((threads - before))
+  fi
   cancel_at=$(now_ms)
   q -d postgres -c "SELECT pg_cancel_backend($pid)" >/dev/null
   wait "$probe"
@@ -137,6 +173,16 @@ cancelled() {  # SQL WHAT
 }
 cancelled "$build_sql" "arg_build of a mesh of $triangles triangles"
 cancelled "$rank_sql" "ranking every pair of 1,000 ARGs"
+
+# A build on two threads in a backend that has loaded the image decoder (whose libraries start
+# threads of their own): the cancel still arrives, because only the backend's own thread takes
+# signals; every other thread blocks them.
+threads_sql="SET arg.max_build_threads = 2;
+SELECT arg_build(mesh, texture) IS NOT NULL FROM textured;
+SELECT arg_build(mesh, 'threads=2') IS NOT NULL FROM big_mesh"
+cancelled "$threads_sql" "a two-thread arg_build after a textured build" masks
+result "$([[ $workers -ge 1 && $blocking == "$threads" && $main_blocks == 0 ]] && echo 1)" \
+  "during it ($workers worker threads seen), $blocking of the backend's $threads other threads block SIGINT, its own thread does not ($main_blocks)"
 
 # A cancelled INSERT through the generated column leaves no row.
 timed "INSERT INTO objects (id, mesh) SELECT 1, mesh FROM big_mesh"
