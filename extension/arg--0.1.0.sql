@@ -170,7 +170,7 @@ CREATE FUNCTION arg_build(mesh bytea, texture bytea, options text DEFAULT '') RE
   AS 'MODULE_PATHNAME', 'arg_build_textured' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 1000000;
 
 COMMENT ON FUNCTION arg_build(bytea, bytea, text) IS
-  'ARG of a mesh whose texture image (PNG, JPEG, ...) is kept outside it, as OBJ does';
+  'ARG of a mesh whose texture image (PNG, JPEG, true-colour or grey TGA, uncompressed BMP) is kept outside it, as OBJ does';
 
 -- Keeping an arg column up to date from a bytea column, as an alternative to a generated column:
 --   CREATE TRIGGER t BEFORE INSERT OR UPDATE ON tbl FOR EACH ROW

@@ -17,8 +17,9 @@ struct Image {
   bool empty() const { return width <= 0 || height <= 0; }
 };
 
-// Decodes a PNG, JPEG, TGA (including run-length encoded) or BMP image held in memory, with
-// OpenImageIO reading from the bytes (never from a file). Grey images are expanded to RGB and
+// Decodes a PNG, JPEG, true-colour or greyscale TGA (including run-length encoded) or
+// uncompressed BMP image held in memory, with OpenImageIO reading from the bytes (never from a
+// file) once io/image_format_checks.hpp has checked the layout. Grey images are expanded to RGB and
 // alpha is dropped. Checks width*height against limits.max_image_pixels before any pixel is
 // read. Throws InputError ("image: ...") or LimitError.
 Image decode_image(std::string_view bytes, const Limits& limits);
