@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Out of memory: with its address space capped (prlimit on one backend), arg_build of a 70,000
-# triangle mesh, the same with two threads, and a textured build whose 3000 x 3000 texture cannot
+# triangle mesh, the same with two threads, and a textured build whose 6000 x 6000 texture cannot
 # be decoded each fail with SQLSTATE 53200, and the session goes on working afterwards; the
 # server never restarts.
 #
@@ -68,8 +68,7 @@ CREATE FUNCTION bmp(side int) RETURNS bytea LANGUAGE sql IMMUTABLE
                || le32(side) || le32(side) || '\x01001800'::bytea || le32(0)
                || le32(3 * side * side) || le32(2835) || le32(2835) || le32(0) || le32(0)
                || decode(repeat('5a', 3 * side * side), 'hex') $$;
-CREATE TABLE texture AS SELECT bmp(3000) AS image;
-ALTER TABLE texture ALTER image SET STORAGE EXTERNAL;
+CREATE TABLE texture AS SELECT bmp(6000) AS image;  -- 108 MB, twice that once decoded
 SQL
 
 # capped NAME HEADROOM_MB PREPARE STATEMENT AFTER: in a new session, runs PREPARE, caps the
@@ -113,12 +112,13 @@ result "$(is_line "$work/threads.statement" "ERROR:  53200")" \
 result "$(is_line "$work/threads.after" t)" "the session then builds a small model"
 
 # The small textured build first loads the image decoder (OpenImageIO) while memory is plentiful;
-# a textured build needs about 70 MB of address space more than idle, whatever the texture.
-capped texture 80 "SELECT arg_build(mesh, bmp(4)) IS NOT NULL FROM textured;" \
+# a textured build needs about 70 MB of address space more than idle, whatever the texture; this
+# one needs its 108 MB of bytes and as much again for the pixels.
+capped texture 150 "SELECT arg_build(mesh, bmp(4)) IS NOT NULL FROM textured;" \
   "SELECT arg_build(mesh, image) IS NOT NULL FROM textured, texture;" \
   "SELECT arg_build(mesh, bmp(4)) IS NOT NULL FROM textured;"
 result "$(is_line "$work/texture.statement" "ERROR:  53200")" \
-  "a textured build with a 3000 x 3000 texture and 80 MB of headroom fails with 53200"
+  "a textured build with a 6000 x 6000 texture and 150 MB of headroom fails with 53200"
 result "$(is_line "$work/texture.after" t)" "the session then builds a small textured model"
 
 now=$(psql -X -tA -d postgres -c "SELECT pg_postmaster_start_time()")
