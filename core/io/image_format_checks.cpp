@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 
+#include "common/byte_io.hpp"
 #include "common/errors.hpp"
 
 namespace arg {
@@ -16,31 +17,27 @@ namespace {
   throw InputError("image: " + what);
 }
 
-struct Reader {
-  std::string_view b;
-  unsigned u8(std::size_t i) const { return static_cast<unsigned char>(b[i]); }
-  std::uint32_t u16le(std::size_t i) const { return u8(i) | u8(i + 1) << 8; }
-  std::uint32_t u32le(std::size_t i) const { return u16le(i) | u16le(i + 2) << 16; }
-  std::uint32_t u32be(std::size_t i) const {
-    return std::uint32_t(u8(i)) << 24 | u8(i + 1) << 16 | u8(i + 2) << 8 | u8(i + 3);
-  }
-};
+// PNG stores lengths and checksums big-endian (ByteReader reads little-endian).
+std::uint32_t u32be(std::string_view b, std::size_t i) {
+  const auto u8 = [&](std::size_t k) { return std::uint32_t(static_cast<unsigned char>(b[k])); };
+  return u8(i) << 24 | u8(i + 1) << 16 | u8(i + 2) << 8 | u8(i + 3);
+}
 
-// OpenImageIO 2.4's PNG reader leaks memory whenever libpng long-jumps out of a read (a chunk
-// past the end of the data, a bad checksum), so such data never reaches it.
+// OpenImageIO 2.4's PNG reader leaks its error message whenever libpng long-jumps out of a read
+// past the end of the data, so every chunk must lie inside the data; a corrupt chunk (wrong CRC)
+// is refused here too, with its offset, instead of by a long jump through OpenImageIO's frames.
 void check_png(std::string_view b) {
-  const Reader r{b};
   std::size_t at = 8;
   for (;;) {
     if (b.size() - at < 12) fail("png: truncated data (no IEND chunk)");
-    const std::uint32_t length = r.u32be(at);
+    const std::uint32_t length = u32be(b, at);
     if (length > b.size() - at - 12) {
       fail("png: the chunk at byte offset " + std::to_string(at) +
            " runs past the end of the data");
     }
     const auto* type = reinterpret_cast<const Bytef*>(b.data() + at + 4);
     const uLong crc = crc32(crc32(0L, Z_NULL, 0), type, uInt(4 + length));
-    if (crc != r.u32be(at + 8 + length)) {
+    if (crc != u32be(b, at + 8 + length)) {
       fail("png: the chunk at byte offset " + std::to_string(at) + " has a wrong checksum");
     }
     const bool end = b.substr(at + 4, 4) == "IEND";
@@ -52,8 +49,9 @@ void check_png(std::string_view b) {
 // Windows and OS/2 bitmaps, uncompressed (or with bit-field masks): OpenImageIO 2.4's run-length
 // decoder throws std::length_error through a C++ frame that cannot pass it on, which aborts.
 void check_bmp(std::string_view b) {
-  const Reader r{b};
-  const std::uint32_t header = r.u32le(14);
+  ByteReader in(b.substr(10), "image: bmp");
+  const std::uint64_t offset = in.get<std::uint32_t>();
+  const std::uint32_t header = in.get<std::uint32_t>();
   const bool os2 = header == 12;
   if (!os2 && header != 40 && header != 52 && header != 56 && header != 108 && header != 124) {
     fail("bmp: unknown info header size " + std::to_string(header));
@@ -62,17 +60,18 @@ void check_bmp(std::string_view b) {
   std::int64_t width, height;
   std::uint32_t planes, bits, compression = 0, colours = 0;
   if (os2) {
-    width = r.u16le(18);
-    height = r.u16le(20);
-    planes = r.u16le(22);
-    bits = r.u16le(24);
+    width = in.get<std::uint16_t>();
+    height = in.get<std::uint16_t>();
+    planes = in.get<std::uint16_t>();
+    bits = in.get<std::uint16_t>();
   } else {
-    width = std::int32_t(r.u32le(18));
-    height = std::int32_t(r.u32le(22));
-    planes = r.u16le(26);
-    bits = r.u16le(28);
-    compression = r.u32le(30);
-    colours = r.u32le(46);
+    width = in.get<std::int32_t>();
+    height = in.get<std::int32_t>();
+    planes = in.get<std::uint16_t>();
+    bits = in.get<std::uint16_t>();
+    compression = in.get<std::uint32_t>();
+    in.get_bytes(12);  // image size, pixels per metre
+    colours = in.get<std::uint32_t>();
   }
   if (height < 0) height = -height;  // rows stored top first
   if (width <= 0 || height <= 0) fail("bmp: no pixels");
@@ -91,7 +90,6 @@ void check_bmp(std::string_view b) {
     if (colours > most) fail("bmp: " + std::to_string(colours) + " palette colours");
     table += std::uint64_t(colours ? colours : most) * (os2 ? 3 : 4);
   }
-  const std::uint64_t offset = r.u32le(10);
   if (offset < 14 + header + table) fail("bmp: the pixels overlap the header or the palette");
   const std::uint64_t row = (std::uint64_t(width) * bits + 31) / 32 * 4;
   if (offset > b.size() || row * std::uint64_t(height) > b.size() - offset) {
@@ -104,7 +102,8 @@ void check_bmp(std::string_view b) {
     for (std::uint64_t y = 0; y < std::uint64_t(height); ++y) {
       for (std::uint64_t x = 0; x < std::uint64_t(width); ++x) {
         const std::uint64_t bit = x * bits;
-        const unsigned byte = r.u8(std::size_t(offset + y * row + bit / 8));
+        const unsigned byte =
+            static_cast<unsigned char>(b[std::size_t(offset + y * row + bit / 8)]);
         const unsigned index = (byte >> (8 - bits - bit % 8)) & ((1u << bits) - 1);
         if (index >= colours) {
           fail("bmp: pixel (" + std::to_string(x) + ", " + std::to_string(y) +
@@ -118,18 +117,21 @@ void check_bmp(std::string_view b) {
 // OpenImageIO 2.4's TGA reader indexes the colour map with unchecked values (a colour-mapped
 // image with an empty map crashes it), so only true-colour and greyscale TGA reach it.
 void check_tga(std::string_view b) {
-  const Reader r{b};
-  const unsigned type = r.u8(2);
-  if (r.u8(1) != 0 || type == 1 || type == 9) {
+  ByteReader in(b, "image: tga");
+  const unsigned id_length = in.get<std::uint8_t>(), colour_map = in.get<std::uint8_t>();
+  const unsigned type = in.get<std::uint8_t>();
+  if (colour_map != 0 || type == 1 || type == 9) {
     fail(
         "tga: colour-mapped images are not supported (save the texture as true-colour TGA, PNG "
         "or JPEG)");
   }
-  const std::uint64_t width = r.u16le(12), height = r.u16le(14), bits = r.u8(16);
+  in.get_bytes(9);  // colour map specification, origin
+  const std::uint64_t width = in.get<std::uint16_t>(), height = in.get<std::uint16_t>();
+  const std::uint64_t bits = in.get<std::uint8_t>();
   if (width == 0 || height == 0) fail("tga: no pixels");
   if (type == 2 || type == 3) {
     const std::uint64_t pixels = width * height * ((bits + 7) / 8);
-    if (18 + r.u8(0) + pixels > b.size()) {
+    if (18 + id_length + pixels > b.size()) {
       fail("tga: " + std::to_string(width) + "x" + std::to_string(height) +
            " pixels do not fit in " + std::to_string(b.size()) + " bytes");
     }
@@ -145,8 +147,8 @@ const char* sniff_image_format(std::string_view b) {
   if (starts("BM") && b.size() >= 26) return "bmp";
   // TGA has no magic number: check the header fields that have only a few legal values.
   if (b.size() >= 18) {
-    const Reader r{b};
-    const unsigned type = r.u8(2), colour_map = r.u8(1), bits = r.u8(16);
+    const auto u8 = [&](std::size_t i) { return unsigned(static_cast<unsigned char>(b[i])); };
+    const unsigned type = u8(2), colour_map = u8(1), bits = u8(16);
     const bool type_ok =
         type == 1 || type == 2 || type == 3 || type == 9 || type == 10 || type == 11;
     const bool bits_ok = bits == 8 || bits == 15 || bits == 16 || bits == 24 || bits == 32;
