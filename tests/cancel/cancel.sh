@@ -15,20 +15,9 @@ set -uo pipefail
 db=arg_cancel
 limit_ms=2000        # statement_timeout is 1 s: the error must arrive within 2 s of the start
 cancel_limit_ms=1000 # and within 1 s of pg_cancel_backend
-work=$(mktemp -d)
+# shellcheck source=../tap_scratch_db.sh
+. "$(dirname "${BASH_SOURCE[0]}")/../tap_scratch_db.sh"
 q() { psql -X -q -v ON_ERROR_STOP=1 -tA "$@"; }
-cleanup() {
-  PGOPTIONS='-c client_min_messages=warning' psql -X -q -d postgres \
-    -c "DROP DATABASE IF EXISTS $db WITH (FORCE)" >/dev/null 2>&1
-  rm -rf "$work"
-}
-trap cleanup EXIT
-
-n=0 failed=0
-result() {  # result OK DESCRIPTION (OK: 1 or 0)
-  n=$((n + 1))
-  if [[ $1 == 1 ]]; then echo "ok $n - $2"; else echo "not ok $n - $2"; failed=$((failed + 1)); fi
-}
 now_ms() { date +%s%3N; }
 
 echo "1..11"

@@ -12,19 +12,8 @@
 set -uo pipefail
 
 db=arg_oom
-work=$(mktemp -d)
-cleanup() {
-  PGOPTIONS='-c client_min_messages=warning' psql -X -q -d postgres \
-    -c "DROP DATABASE IF EXISTS $db WITH (FORCE)" > /dev/null 2>&1
-  rm -rf "$work"
-}
-trap cleanup EXIT
-
-n=0 failed=0
-result() { # result OK DESCRIPTION (OK: 1 or 0)
-  n=$((n + 1))
-  if [[ $1 == 1 ]]; then echo "ok $n - $2"; else echo "not ok $n - $2"; failed=$((failed + 1)); fi
-}
+# shellcheck source=../tap_scratch_db.sh
+. "$(dirname "${BASH_SOURCE[0]}")/../tap_scratch_db.sh"
 
 if ! command -v prlimit > /dev/null; then
   echo "1..0 # SKIP prlimit not found (util-linux)"
