@@ -36,6 +36,8 @@ PG_CXXFLAGS = -std=c++17 -Wextra -Wno-unused-parameter -Wno-missing-field-initia
 # OpenImageIO is not linked: arg_image.so (built by CMake) is loaded on the first texture.
 SHLIB_LINK = $(CORE_LIB) -lOpenMeshCore -lz -pthread -lstdc++
 IMAGE_LIB = $(BUILD_DIR)/arg_image$(DLSUFFIX)
+# OpenVDB is not linked either: arg_vdb.so is loaded on the first build that makes a proxy.
+VDB_LIB = $(BUILD_DIR)/arg_vdb$(DLSUFFIX)
 
 # PGXS's LLVM bitcode rule ignores PG_CXXFLAGS (so no -std=c++17) and JIT inlining gains nothing
 # here: build without bitcode. Track header dependencies so core header changes rebuild the glue.
@@ -59,15 +61,16 @@ $(BUILD_DIR)/CMakeCache.txt:
 # ARG_NO_CMAKE=1 (used for the sudo install step) takes the library as it is.
 ifneq ($(ARG_NO_CMAKE),1)
 $(CORE_LIB): FORCE | $(BUILD_DIR)/CMakeCache.txt
-	$(CMAKE) --build $(BUILD_DIR) --target argcore argimage -j $(JOBS)
+	$(CMAKE) --build $(BUILD_DIR) --target argcore argimage argvdb -j $(JOBS)
 endif
 
 arg$(DLSUFFIX): $(CORE_LIB)
 
-install: install-image
-.PHONY: install-image
-install-image:
+install: install-plugins
+.PHONY: install-plugins
+install-plugins:
 	$(INSTALL_SHLIB) '$(IMAGE_LIB)' '$(DESTDIR)$(pkglibdir)/arg_image$(DLSUFFIX)'
+	$(INSTALL_SHLIB) '$(VDB_LIB)' '$(DESTDIR)$(pkglibdir)/arg_vdb$(DLSUFFIX)'
 
 .PHONY: FORCE
 FORCE:

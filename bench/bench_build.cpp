@@ -2,7 +2,6 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_models.hpp"
-#include "build/build_arg.hpp"
 #include "features/curvature.hpp"
 #include "features/node_attributes.hpp"
 #include "graph/serialize.hpp"
@@ -12,6 +11,7 @@
 #include "mesh/mesh_edges.hpp"
 #include "mesh/normalize_pose.hpp"
 #include "mu/mu_function.hpp"
+#include "pipeline/build_arg.hpp"
 #include "reeb/reeb_levels.hpp"
 #include "reeb/slice_intervals.hpp"
 

@@ -2,8 +2,8 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_models.hpp"
-#include "build/build_arg.hpp"
 #include "match/similarity.hpp"
+#include "pipeline/build_arg.hpp"
 
 using namespace arg;
 

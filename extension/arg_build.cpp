@@ -1,5 +1,5 @@
 // arg_build: mesh bytes (OFF, OBJ, PLY, STL, GLB; detected) and an optional texture to an ARG.
-#include "build/build_arg.hpp"
+#include "pipeline/build_arg.hpp"
 
 #include "arg_bridge.hpp"
 #include "arg_build.hpp"

@@ -64,10 +64,13 @@ std::string describe(const arg::ArgGraph& g, std::size_t bytes) {
          ", \"vertices\": " + std::to_string(s.vertices) + ", \"area\": " + json_number(s.area) +
          ", \"volume\": " + json_number(s.volume) +
          ", \"has_colour\": " + (s.has_colour ? "true" : "false") +
-         ", \"open\": " + ((s.flags & 1) ? "true" : "false") +
+         ", \"open\": " + ((s.flags & arg::kFlagOpen) ? "true" : "false") +
+         ", \"wide_open\": " + ((s.flags & arg::kFlagWideOpen) ? "true" : "false") +
+         ", \"proxy\": " + ((s.flags & arg::kFlagProxy) ? "true" : "false") +
+         ", \"whole_shape\": " + (g.panorama.empty() ? "false" : "true") +
          ", \"options\": " + json_string(arg::format_build_options(g.options)) +
          ", \"builder_version\": " + json_string(builder) +
-         ", \"format_version\": " + std::to_string(arg::kFormatVersion) +
+         ", \"format_version\": " + std::to_string(g.format) +
          ", \"bytes\": " + std::to_string(bytes) + "}";
 }
 

@@ -3,6 +3,7 @@
 
 #include "arg_bridge.hpp"
 #include "arg_guc.hpp"
+#include "arg_vdb.hpp"
 
 extern "C" {
 #include "utils/builtins.h"
@@ -13,6 +14,7 @@ void _PG_init(void);
 
 void _PG_init(void) {
   argpg::define_gucs();
+  argpg::register_distance_field();
 }
 
 PG_FUNCTION_INFO_V1(arg_version);

@@ -5,7 +5,7 @@
 //
 // A NULL mesh gives a NULL ARG. An UPDATE rebuilds only when the mesh or texture changed or the
 // ARG was set to NULL, so editing a title does not rebuild (and SET descr = NULL forces a build).
-#include "build/build_arg.hpp"
+#include "pipeline/build_arg.hpp"
 
 #include "arg_bridge.hpp"
 #include "arg_build.hpp"

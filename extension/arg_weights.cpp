@@ -1,6 +1,7 @@
 // The `arg_weights` type's input and output. Text: what arg::parse_weights accepts (a preset,
 // key=value pairs, or both) in, arg::format_weights (canonical, lossless) out. Binary: eleven
-// float4 and a byte of switches in network byte order, validated like text.
+// float4, a byte of switches and three bytes of mixing weights in network byte order (the
+// three bytes may be missing, as clients of 0.1.0 send it), validated like text.
 #include "arg_weights.hpp"
 
 extern "C" {
@@ -33,6 +34,11 @@ arg::Weights to_weights(const ArgWeights& stored) {
   w.l2 = (stored.flags & kL2) != 0;
   w.tung_rule = (stored.flags & kTungRule) != 0;
   w.groups = (stored.flags & kGroups) != 0;
+  float arg::Weights::*const mixing[3] = {&arg::Weights::graph, &arg::Weights::panorama,
+                                          &arg::Weights::spectrum};
+  const bool legacy = stored.mixing[0] == 0 && stored.mixing[1] == 0 && stored.mixing[2] == 0;
+  for (int i = 0; i < 3; ++i)
+    w.*mixing[i] = legacy ? (i == 0 ? 1.0f : 0.0f) : arg::mixing_weight(stored.mixing[i]);
   return w;
 }
 
@@ -42,6 +48,9 @@ ArgWeights from_weights(const arg::Weights& weights) {
   for (int i = 0; i < 11; ++i) stored.values[i] = weights.*kFields[i];
   stored.flags = uint8((weights.l2 ? kL2 : 0) | (weights.tung_rule ? kTungRule : 0) |
                        (weights.groups ? kGroups : 0));
+  stored.mixing[0] = uint8(arg::mixing_steps(weights.graph));
+  stored.mixing[1] = uint8(arg::mixing_steps(weights.panorama));
+  stored.mixing[2] = uint8(arg::mixing_steps(weights.spectrum));
   return stored;
 }
 
@@ -80,6 +89,8 @@ Datum arg_weights_recv(PG_FUNCTION_ARGS) {
   std::memset(&received, 0, sizeof received);
   for (float4& x : received.values) x = pq_getmsgfloat4(buf);
   const int flags = pq_getmsgbyte(buf);
+  if (buf->cursor < buf->len)
+    for (uint8& m : received.mixing) m = uint8(pq_getmsgbyte(buf));
   if (buf->cursor != buf->len)
     ereport(ERROR, (errcode(ERRCODE_INVALID_BINARY_REPRESENTATION),
                     errmsg("invalid binary input for type arg_weights: %d bytes after the value",
@@ -94,6 +105,7 @@ Datum arg_weights_recv(PG_FUNCTION_ARGS) {
     const arg::Weights w = argpg::to_weights(received);
     if (!(arg::parse_weights(arg::format_weights(w)) == w))
       throw arg::InputError("weights: value does not survive its canonical text form");
+    received = argpg::from_weights(w);  // a 0.1.0 value gets its mixing bytes spelled out
   });
   argpg::raise_if_failed(out, ERRCODE_INVALID_BINARY_REPRESENTATION,
                          "invalid binary input for type arg_weights");
@@ -106,6 +118,7 @@ Datum arg_weights_send(PG_FUNCTION_ARGS) {
   pq_begintypsend(&buf);
   for (float4 x : weights->values) pq_sendfloat4(&buf, x);
   pq_sendbyte(&buf, weights->flags);
+  for (uint8 m : weights->mixing) pq_sendbyte(&buf, m);
   PG_RETURN_BYTEA_P(pq_endtypsend(&buf));
 }
 

@@ -7,12 +7,15 @@
 
 namespace argpg {
 
-// The stored form: the eleven weights in the order of arg::format_weights, then the switches.
-// Unused bits and bytes are always zero, so equal weights are equal bytes.
+// The stored form: the eleven weights of matching and sim in the order of arg::format_weights,
+// the switches, then graph, panorama and spectrum as multiples of arg::kMixingStep. Unused bits
+// are always zero, so equal weights are equal bytes. The three mixing bytes all zero is how
+// values stored before they existed read: the graph alone (graph=1 panorama=0 spectrum=0),
+// which a new value cannot be confused with (at least one of them must be positive).
 struct ArgWeights {
   float4 values[11];
   uint8 flags;  // kL2, kTungRule, kGroups
-  uint8 unused[3];
+  uint8 mixing[3];
 };
 static_assert(sizeof(ArgWeights) == 48, "arg_weights has INTERNALLENGTH = 48");
 

@@ -1,18 +1,54 @@
-// D2 and cords baselines on the same cleaned, pose-normalised mesh the ARG uses.
+// The descriptor methods of the quality harness, on the same cleaned, posed mesh as the ARG.
 #include "eval/baseline_descriptors.hpp"
 
 #include <cmath>
 
+#include "features/depth_buffer_descriptor.hpp"
+#include "features/panorama_descriptor.hpp"
 #include "features/shape_distributions.hpp"
 #include "mesh/clean_mesh.hpp"
 #include "mesh/normalize_pose.hpp"
 
 namespace arg {
 
-std::vector<float> baseline_descriptor(const Mesh& input, BaselineKind kind) {
+namespace {
+
+std::vector<float> d2(const Mesh& m) {
+  return d2_histogram(m, 64, 32768);
+}
+std::vector<float> cords(const Mesh& m) {
+  return cords_histogram(m, 64);
+}
+std::vector<float> depth(const Mesh& m) {
+  return depth_buffer_descriptor(depth_images(m, 64), 8);
+}
+
+}  // namespace
+
+const std::vector<DescriptorMethod>& descriptor_methods() {
+  static const std::vector<DescriptorMethod> methods = {
+      {"d2", "Osada et al.: 64 bins of distances between 32768 random surface point pairs", d2,
+       l1_distance},
+      {"cords", "Paquet and Rioux: 64 bins of triangle-centre distances to the centre of mass",
+       cords, l1_distance},
+      {"depth", "Vranic: Fourier magnitudes of six 64x64 depth images in the PCA frame", depth,
+       l1_distance},
+      {"panorama",
+       "Papadakis et al.: Fourier magnitudes of cylindrical views about the axes of two frames",
+       panorama_descriptor, panorama_distance},
+  };
+  return methods;
+}
+
+const DescriptorMethod* find_descriptor_method(std::string_view name) {
+  for (const DescriptorMethod& m : descriptor_methods())
+    if (name == m.name) return &m;
+  return nullptr;
+}
+
+Mesh posed_for_descriptors(const Mesh& input) {
   Mesh mesh = clean_mesh(input);
-  mesh = apply_pose(mesh, surface_pose(mesh));
-  return kind == BaselineKind::D2 ? d2_histogram(mesh, 64, 32768) : cords_histogram(mesh, 64);
+  return apply_pose(mesh, surface_pose(mesh));
 }
 
 double l1_distance(const std::vector<float>& a, const std::vector<float>& b) {

@@ -1,20 +1,31 @@
-// The descriptors of the baseline methods the paper compares with: D2 and cords histograms.
+// Whole-shape descriptors that argtool eval measures beside the ARG, each with its distance.
 #pragma once
 
+#include <string_view>
 #include <vector>
 
 #include "mesh/mesh.hpp"
 
 namespace arg {
 
-enum class BaselineKind { D2, Cords };
+struct DescriptorMethod {
+  const char* name;
+  const char* help;
+  // From the cleaned mesh in the aligned, centred, scaled frame of apply_pose.
+  std::vector<float> (*compute)(const Mesh& posed);
+  double (*distance)(const std::vector<float>&, const std::vector<float>&);
+};
 
-// Cleans and pose-normalises the mesh, then: D2 (Osada et al.: 64 bins of the distances
-// between 32768 area-weighted random point pairs, fixed seed) or cords (Paquet and Rioux:
-// 64 bins of the area-weighted distances of triangle centres to the centre of mass).
-std::vector<float> baseline_descriptor(const Mesh& mesh, BaselineKind kind);
+// d2 (Osada et al.), cords (Paquet and Rioux), depth (Vranic's depth buffer), ...
+const std::vector<DescriptorMethod>& descriptor_methods();
 
-// L1 distance between two histograms of the same size.
+// nullptr when no method has that name.
+const DescriptorMethod* find_descriptor_method(std::string_view name);
+
+// The mesh every descriptor method reads: cleaned, centred, aligned and scaled.
+Mesh posed_for_descriptors(const Mesh& mesh);
+
+// L1 distance between two vectors of the same size.
 double l1_distance(const std::vector<float>& a, const std::vector<float>& b);
 
 }  // namespace arg

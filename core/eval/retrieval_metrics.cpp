@@ -7,6 +7,72 @@
 
 namespace arg {
 
+namespace {
+
+// Adds one query's measures to `out`: `ranked` lists the results best first, `hit` says which
+// are of the query's class and `relevant` how many the collection holds.
+void add_query(RetrievalScores& out, const std::vector<int>& ranked, const std::vector<char>& hit,
+               int relevant, int c) {
+  int found = 0, in_first = 0, in_second = 0, in_32 = 0;
+  double dcg = 0, ap = 0;
+  std::vector<double> precision_at_hit;
+  for (std::size_t rank = 1; rank <= ranked.size(); ++rank) {
+    if (!hit[std::size_t(ranked[rank - 1])]) continue;
+    ++found;
+    if (int(rank) <= relevant) ++in_first;
+    if (int(rank) <= 2 * relevant) ++in_second;
+    if (rank <= 32) ++in_32;
+    dcg += rank == 1 ? 1.0 : 1.0 / std::log2(double(rank));
+    double precision = double(found) / double(rank);
+    ap += precision;
+    precision_at_hit.push_back(precision);
+  }
+  double ideal = 1.0;
+  for (int k = 2; k <= relevant; ++k) ideal += 1.0 / std::log2(double(k));
+  out.nn += !ranked.empty() && hit[std::size_t(ranked[0])] ? 1.0 : 0.0;
+  const double ft = double(in_first) / relevant;
+  out.ft += ft;
+  out.ft_per_class[std::size_t(c)] += ft;
+  out.st += double(in_second) / relevant;
+  const double p32 = in_32 / 32.0, r32 = double(in_32) / relevant;
+  out.e += p32 + r32 > 0 ? 2.0 * p32 * r32 / (p32 + r32) : 0.0;
+  out.dcg += dcg / ideal;
+  out.map += ap / relevant;
+  // Interpolated precision: the best precision at any recall at least r.
+  for (int k = 0; k < kRecallPoints; ++k) {
+    const double recall = double(k + 1) / kRecallPoints;
+    const std::size_t needed = std::size_t(std::ceil(recall * relevant - 1e-9));
+    double best = 0;
+    for (std::size_t h = needed == 0 ? 0 : needed - 1; h < precision_at_hit.size(); ++h)
+      best = std::max(best, precision_at_hit[h]);
+    out.precision_at_recall[std::size_t(k)] += best;
+  }
+}
+
+void finish(RetrievalScores& out, int counted, const std::vector<int>& queries_per_class) {
+  if (counted > 0) {
+    for (double* x : {&out.nn, &out.ft, &out.st, &out.e, &out.dcg, &out.map}) *x /= counted;
+    for (double& p : out.precision_at_recall) p /= counted;
+  }
+  for (std::size_t c = 0; c < out.ft_per_class.size(); ++c)
+    if (queries_per_class[c] > 0) out.ft_per_class[c] /= queries_per_class[c];
+}
+
+// Ranks the models of one distance row by (distance, index), invalid models last.
+void rank_row(const double* row, int n, int skip, const std::vector<bool>& valid,
+              std::vector<int>& order) {
+  order.clear();
+  for (int j = 0; j < n; ++j)
+    if (j != skip) order.push_back(j);
+  auto key = [&](int j) { return valid[std::size_t(j)] ? row[j] : HUGE_VAL; };
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    const double da = key(a), db = key(b);
+    return da != db ? da < db : a < b;
+  });
+}
+
+}  // namespace
+
 RetrievalScores retrieval_scores(const std::vector<double>& distance, const std::vector<int>& label,
                                  int classes, const std::vector<bool>& valid_in) {
   const int n = int(label.size());
@@ -26,60 +92,45 @@ RetrievalScores retrieval_scores(const std::vector<double>& distance, const std:
     ++counted;
     ++queries_per_class[std::size_t(c)];
     if (!valid[std::size_t(q)]) continue;
-    order.clear();
-    for (int j = 0; j < n; ++j)
-      if (j != q) order.push_back(j);
-    auto key = [&](int j) {
-      return valid[std::size_t(j)] ? distance[std::size_t(q) * std::size_t(n) + std::size_t(j)]
-                                   : HUGE_VAL;
-    };
-    std::sort(order.begin(), order.end(), [&](int a, int b) {
-      double da = key(a), db = key(b);
-      return da != db ? da < db : a < b;
-    });
-    int found = 0, in_first = 0, in_second = 0, in_32 = 0;
-    double dcg = 0, ap = 0;
-    std::vector<double> precision_at_hit;
-    for (std::size_t rank = 1; rank <= order.size(); ++rank) {
-      const bool hit = label[std::size_t(order[rank - 1])] == c;
-      if (!hit) continue;
-      ++found;
-      if (int(rank) <= relevant) ++in_first;
-      if (int(rank) <= 2 * relevant) ++in_second;
-      if (rank <= 32) ++in_32;
-      dcg += rank == 1 ? 1.0 : 1.0 / std::log2(double(rank));
-      double precision = double(found) / double(rank);
-      ap += precision;
-      precision_at_hit.push_back(precision);
-    }
-    double ideal = 1.0;
-    for (int k = 2; k <= relevant; ++k) ideal += 1.0 / std::log2(double(k));
-    out.nn += label[std::size_t(order[0])] == c ? 1.0 : 0.0;
-    const double ft = double(in_first) / relevant;
-    out.ft += ft;
-    out.ft_per_class[std::size_t(c)] += ft;
-    out.st += double(in_second) / relevant;
-    const double p32 = in_32 / 32.0, r32 = double(in_32) / relevant;
-    out.e += p32 + r32 > 0 ? 2.0 * p32 * r32 / (p32 + r32) : 0.0;
-    out.dcg += dcg / ideal;
-    out.map += ap / relevant;
-    // Interpolated precision: the best precision at any recall at least r.
-    for (int k = 0; k < kRecallPoints; ++k) {
-      const double recall = double(k + 1) / kRecallPoints;
-      const std::size_t needed = std::size_t(std::ceil(recall * relevant - 1e-9));
-      double best = 0;
-      for (std::size_t h = needed == 0 ? 0 : needed - 1; h < precision_at_hit.size(); ++h)
-        best = std::max(best, precision_at_hit[h]);
-      out.precision_at_recall[std::size_t(k)] += best;
-    }
+    rank_row(distance.data() + std::size_t(q) * std::size_t(n), n, q, valid, order);
+    std::vector<char> hit(static_cast<std::size_t>(n));
+    for (int j = 0; j < n; ++j) hit[std::size_t(j)] = label[std::size_t(j)] == c && j != q;
+    add_query(out, order, hit, relevant, c);
   }
-  if (counted > 0) {
-    for (double* x : {&out.nn, &out.ft, &out.st, &out.e, &out.dcg, &out.map}) *x /= counted;
-    for (double& p : out.precision_at_recall) p /= counted;
+  finish(out, counted, queries_per_class);
+  return out;
+}
+
+RetrievalScores query_scores(const std::vector<double>& distance,
+                             const std::vector<int>& query_label, const std::vector<int>& label,
+                             int classes, const std::vector<bool>& query_valid_in,
+                             const std::vector<bool>& valid_in) {
+  const int q_count = int(query_label.size()), n = int(label.size());
+  const std::vector<bool> valid =
+      valid_in.empty() ? std::vector<bool>(std::size_t(n), true) : valid_in;
+  const std::vector<bool> query_valid =
+      query_valid_in.empty() ? std::vector<bool>(std::size_t(q_count), true) : query_valid_in;
+  std::vector<int> class_size(std::size_t(classes), 0);
+  for (int c : label) ++class_size[std::size_t(c)];
+  RetrievalScores out;
+  out.precision_at_recall.assign(kRecallPoints, 0.0);
+  out.ft_per_class.assign(std::size_t(classes), 0.0);
+  std::vector<int> queries_per_class(std::size_t(classes), 0);
+  std::vector<int> order;
+  int counted = 0;
+  for (int q = 0; q < q_count; ++q) {
+    const int c = query_label[std::size_t(q)];
+    const int relevant = c >= 0 && c < classes ? class_size[std::size_t(c)] : 0;
+    if (relevant <= 0) continue;
+    ++counted;
+    ++queries_per_class[std::size_t(c)];
+    if (!query_valid[std::size_t(q)]) continue;
+    rank_row(distance.data() + std::size_t(q) * std::size_t(n), n, -1, valid, order);
+    std::vector<char> hit(static_cast<std::size_t>(n));
+    for (int j = 0; j < n; ++j) hit[std::size_t(j)] = label[std::size_t(j)] == c;
+    add_query(out, order, hit, relevant, c);
   }
-  for (int c = 0; c < classes; ++c)
-    if (queries_per_class[std::size_t(c)] > 0)
-      out.ft_per_class[std::size_t(c)] /= queries_per_class[std::size_t(c)];
+  finish(out, counted, queries_per_class);
   return out;
 }
 

@@ -24,4 +24,15 @@ struct RetrievalScores {
 RetrievalScores retrieval_scores(const std::vector<double>& distance, const std::vector<int>& label,
                                  int classes, const std::vector<bool>& valid = {});
 
+// Queries from outside the collection (the robustness benchmark: transformed copies against the
+// clean set). `distance` is row-major q x n; each query ranks all n models by (distance,
+// index); its relevant models are those of its class in the collection (class size C, the
+// query's own original among them), so FT counts hits in the first C results, ST in 2C, and
+// DCG and mAP are taken over the C relevant models. An invalid query is a miss; an invalid
+// model ranks last.
+RetrievalScores query_scores(const std::vector<double>& distance,
+                             const std::vector<int>& query_label, const std::vector<int>& label,
+                             int classes, const std::vector<bool>& query_valid = {},
+                             const std::vector<bool>& valid = {});
+
 }  // namespace arg

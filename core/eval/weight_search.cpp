@@ -1,38 +1,61 @@
-// Coordinate search over the loss and sim weights (the paper's future work: learnt weights).
+// Coordinate search over the loss, sim and mixing weights (the paper's future work: learnt
+// weights).
 #include "eval/weight_search.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 namespace arg {
 
+namespace {
+
+struct Knob {
+  const char* name;
+  float Weights::*member;
+  bool mixing;  // on the grid of kMixingStep
+};
+
+constexpr Knob kKnobs[] = {
+    {"graph", &Weights::graph, true},        {"panorama", &Weights::panorama, true},
+    {"spectrum", &Weights::spectrum, true},  {"alpha_s", &Weights::alpha_s, false},
+    {"beta_s", &Weights::beta_s, false},     {"lambda_1", &Weights::lambda_1, false},
+    {"lambda_2", &Weights::lambda_2, false}, {"lambda_3", &Weights::lambda_3, false},
+    {"lambda_4", &Weights::lambda_4, false}, {"alpha_l", &Weights::alpha_l, false},
+    {"beta_l", &Weights::beta_l, false},     {"gamma_l", &Weights::gamma_l, false},
+    {"delta_l", &Weights::delta_l, false},   {"eps_l", &Weights::eps_l, false},
+};
+
+bool valid(const Weights& w) {
+  return w.alpha_s + w.beta_s + w.lambda_1 + w.lambda_2 + w.lambda_3 + w.lambda_4 > 0 &&
+         w.graph + w.panorama + w.spectrum > 0;
+}
+
+}  // namespace
+
+bool is_mixing_weight(const char* name) {
+  for (const Knob& k : kKnobs)
+    if (std::string(name) == k.name) return k.mixing;
+  return false;
+}
+
 Weights search_weights(const Weights& start, const std::function<double(const Weights&)>& objective,
                        int rounds, double min_gain,
-                       const std::function<void(const std::string&)>& log) {
-  struct Knob {
-    const char* name;
-    float Weights::*member;
-  };
-  static const Knob knobs[] = {
-      {"alpha_s", &Weights::alpha_s},   {"beta_s", &Weights::beta_s},
-      {"lambda_1", &Weights::lambda_1}, {"lambda_2", &Weights::lambda_2},
-      {"lambda_3", &Weights::lambda_3}, {"lambda_4", &Weights::lambda_4},
-      {"alpha_l", &Weights::alpha_l},   {"beta_l", &Weights::beta_l},
-      {"gamma_l", &Weights::gamma_l},   {"delta_l", &Weights::delta_l},
-      {"eps_l", &Weights::eps_l},
-  };
+                       const std::function<void(const std::string&)>& log, bool mixing_only) {
   Weights best = start;
   double best_score = objective(best);
   for (int round = 0; round < rounds; ++round) {
     bool changed = false;
-    for (const Knob& k : knobs) {
+    for (const Knob& k : kKnobs) {
+      if (mixing_only && !k.mixing) continue;
       const float current = best.*k.member;
-      const float trials[] = {current * 0.5f, current * 2.0f, current == 0 ? 0.1f : 0.0f};
+      float trials[3] = {current * 0.5f, current * 2.0f, current == 0 ? 0.1f : 0.0f};
+      if (k.mixing)
+        for (float& t : trials) t = mixing_weight(std::min(255, std::max(0, mixing_steps(t))));
       for (float value : trials) {
+        if (value == current) continue;
         Weights w = best;
         w.*k.member = value;
-        const double sims =
-            w.alpha_s + w.beta_s + w.lambda_1 + w.lambda_2 + w.lambda_3 + w.lambda_4;
-        if (!(sims > 0)) continue;
+        if (!valid(w)) continue;
         const double score = objective(w);
         if (score > best_score + min_gain) {
           if (log) {
@@ -48,6 +71,22 @@ Weights search_weights(const Weights& start, const std::function<double(const We
     }
     if (!changed) break;
   }
+  return best;
+}
+
+Weights grid_search_mixing(const Weights& start,
+                           const std::function<double(const Weights&)>& objective) {
+  Weights best = start;
+  double best_score = -1;
+  for (int panorama : {10, 20, 30, 40, 60, 80, 120})  // in steps of kMixingStep
+    for (int spectrum : {0, 2, 5, 10, 20, 30, 40, 60}) {
+      Weights w = start;
+      w.graph = mixing_weight(20);
+      w.panorama = mixing_weight(panorama);
+      w.spectrum = mixing_weight(spectrum);
+      const double score = objective(w);
+      if (score > best_score) best = w, best_score = score;
+    }
   return best;
 }
 

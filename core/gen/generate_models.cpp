@@ -7,9 +7,9 @@
 #include <cstdio>
 
 #include "common/errors.hpp"
-#include "gen/collapse_short_edges.hpp"
 #include "gen/marching_tetrahedra.hpp"
 #include "gen/model_blueprints.hpp"
+#include "mesh/collapse_short_edges.hpp"
 
 namespace arg {
 namespace {
@@ -73,12 +73,12 @@ GeneratedModel generate_model(const std::string& label, int variant, int resolut
   // collapsing edges under a fraction of a cell removes them, and longer edges go where the
   // surface is flat, so flat walls and table tops do not spend triangles that limbs need.
   const double step = gen::marching_grid_step(blueprint.solid.bounds, resolution);
-  gen::CollapseOptions collapse;
+  CollapseOptions collapse;
   collapse.min_length = kCollapseShort * step;
   collapse.flat_length = kCollapseFlat * step;
   collapse.flat_cosine = kFlatCosine;
   model.mesh =
-      gen::collapse_short_edges(gen::marching_tetrahedra(blueprint.solid, resolution), collapse);
+      collapse_short_edges(gen::marching_tetrahedra(blueprint.solid, resolution), collapse);
   if (colour) {
     const Mesh& m = model.mesh;
     model.mesh.C.resize(m.F.rows(), 3);

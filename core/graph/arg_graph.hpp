@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "build/build_options.hpp"
+#include "pipeline/build_options.hpp"
 
 namespace arg {
 
@@ -38,19 +38,26 @@ struct ArgNode {
 };
 
 // Whole-model facts kept in the header.
+// Summary flags. Open: the mesh had boundary edges. Proxy: mu and the graph were computed on
+// its watertight proxy. Wide open: its boundary is longer than the square root of its area (a
+// sheet, or openings far larger than a scan's holes), so its geodesics are not the closed
+// shape's.
+inline constexpr std::uint16_t kFlagOpen = 1, kFlagProxy = 2, kFlagWideOpen = 4;
+
 struct ArgSummary {
   std::uint32_t triangles = 0;  // after cleaning and refinement
   std::uint32_t vertices = 0;
   std::uint16_t components = 0;  // connected components of the cleaned mesh
   std::uint16_t genus = 0;       // independent loops of the finest Reeb graph
   std::uint16_t has_colour = 0;
-  std::uint16_t flags = 0;  // bit 0: mesh was open (had boundary edges)
+  std::uint16_t flags = 0;  // kFlagOpen | kFlagProxy | kFlagWideOpen
   float area = 0;           // surface area before scale normalisation
   float volume = 0;         // enclosed volume before scale normalisation
   float scale = 0;          // the factor applied to reach unit RMS radius
 };
 
 struct ArgGraph {
+  std::uint16_t format = 2;  // binary format it was read in (or will be written in): 1 or 2
   BuildOptions options;
   std::uint32_t builder_version = 0;  // major * 10000 + minor * 100 + patch
   ArgSummary summary;
@@ -60,6 +67,9 @@ struct ArgGraph {
                                             // [level_begin[r], level_begin[r + 1])
   std::vector<std::uint32_t> children;      // CSR targets of ArgNode::child_begin/count
   std::vector<std::uint32_t> adjacency;     // CSR targets of ArgNode::adj_begin/count
+  // Whole-shape descriptors that SIM weighs beside the graph (empty in format-1 values):
+  std::vector<float> panorama;  // kPanoramaSize values (features/panorama_descriptor.hpp)
+  std::vector<float> spectrum;  // kSpectrumSize values (features/laplace_spectrum.hpp)
 
   int levels() const { return options.levels; }
 };

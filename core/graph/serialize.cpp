@@ -10,6 +10,8 @@
 #include "common/byte_io.hpp"
 #include "common/errors.hpp"
 #include "common/hash.hpp"
+#include "features/laplace_spectrum.hpp"
+#include "features/panorama_descriptor.hpp"
 
 namespace arg {
 
@@ -17,13 +19,25 @@ namespace {
 
 constexpr char kMagic[4] = {'A', 'R', 'G', 'R'};
 constexpr std::size_t kLevelSlots = kMaxLevels + 2;
-constexpr std::size_t kHeaderSize =
+constexpr std::size_t kHeaderSize1 =
     4 + 2 + 2 + 4 + 4 + 8 + 4 + 4 + 4 + 4 + 28 + 4 * kLevelSlots + 4 * kGlobalDims;
+// Format 2 adds the surface option (1 byte, 1 reserved) and the proxy resolution (2 bytes).
+constexpr std::size_t kHeaderSize2 = kHeaderSize1 + 4;
 constexpr std::size_t kDigestAt = 16, kDigestEnd = 24;  // the digest covers every other byte
 constexpr std::size_t kNodeSize =
     2 + 2 + 4 * 5 + 4 * 8 + 4 * (kCordBins + 2 * kCurvatureBins + 3 * kColourBins);
 constexpr std::uint32_t kMaxNodes = 1u << 20;
 constexpr char kTextTag[] = "arg1:";
+
+// Format 2 ends with tagged sections, in increasing tag order, each at most once: a 4-byte tag,
+// the payload's length in bytes (uint32) and the payload. A later feature is a new tag; the
+// reader knows every tag it accepts and the exact length each must have.
+constexpr std::uint32_t tag_of(const char (&name)[5]) {
+  return std::uint32_t(std::uint8_t(name[0])) | std::uint32_t(std::uint8_t(name[1])) << 8 |
+         std::uint32_t(std::uint8_t(name[2])) << 16 | std::uint32_t(std::uint8_t(name[3])) << 24;
+}
+constexpr std::uint32_t kTagPanorama = tag_of("PANO");
+constexpr std::uint32_t kTagSpectrum = tag_of("SPEC");
 
 // Calls f on every field of a node, in the order of the binary form.
 template <class Node, class F>
@@ -65,11 +79,14 @@ Header read_header(ByteReader& in, std::string_view bytes, ArgGraph& g, bool che
   std::string_view magic = in.get_bytes(4);
   if (magic != std::string_view(kMagic, 4)) in.fail("bad magic (not an ARG value)");
   h.version = in.get<std::uint16_t>();
-  if (h.version != kFormatVersion)
-    in.fail("unsupported format version " + std::to_string(h.version) + " (this build reads " +
+  if (h.version != 1 && h.version != kFormatVersion)
+    in.fail("unsupported format version " + std::to_string(h.version) + " (this build reads 1 to " +
             std::to_string(kFormatVersion) + ")");
   h.header_size = in.get<std::uint16_t>();
-  if (h.header_size != kHeaderSize) in.fail("header size " + std::to_string(h.header_size));
+  if (h.header_size != (h.version == 1 ? kHeaderSize1 : kHeaderSize2))
+    in.fail("header size " + std::to_string(h.header_size));
+  if (bytes.size() < h.header_size)
+    in.fail("value of " + std::to_string(bytes.size()) + " bytes is shorter than its header");
   h.total_size = in.get<std::uint32_t>();
   if (h.total_size != bytes.size())
     in.fail("declared size " + std::to_string(h.total_size) + " but value has " +
@@ -90,9 +107,10 @@ Header read_header(ByteReader& in, std::string_view bytes, ArgGraph& g, bool che
   h.adjacency_count = in.get<std::uint32_t>();
   if (h.node_count < 1 || h.node_count > kMaxNodes)
     in.fail("node count " + std::to_string(h.node_count));
-  std::uint64_t expected = kHeaderSize + std::uint64_t(h.node_count) * kNodeSize +
-                           4 * (std::uint64_t(h.child_count) + h.adjacency_count);
-  if (expected != bytes.size())
+  const std::uint64_t expected = h.header_size + std::uint64_t(h.node_count) * kNodeSize +
+                                 4 * (std::uint64_t(h.child_count) + h.adjacency_count);
+  // Format 1 ends with the adjacency; format 2 has its sections after it.
+  if (h.version == 1 ? expected != bytes.size() : expected > bytes.size())
     in.fail("counts (" + std::to_string(h.node_count) + " nodes, " + std::to_string(h.child_count) +
             " links, " + std::to_string(h.adjacency_count) + " adjacencies) need " +
             std::to_string(expected) + " bytes, value has " + std::to_string(bytes.size()));
@@ -120,6 +138,20 @@ Header read_header(ByteReader& in, std::string_view bytes, ArgGraph& g, bool che
     x = in.get<float>();
     if (!finite(x)) in.fail("global descriptor holds a non-finite value");
   }
+  g.format = h.version;
+  if (h.version == 1) {
+    g.options.surface = SurfaceKind::Mesh;  // format 1 predates the proxy
+  } else {
+    const std::uint8_t surface = in.get<std::uint8_t>();
+    if (surface > 2) in.fail("surface kind " + std::to_string(surface));
+    if (in.get<std::uint8_t>() != 0) in.fail("reserved header byte is not zero");
+    g.options.surface = SurfaceKind(surface);
+    g.options.proxy_resolution = in.get<std::uint16_t>();
+    if (g.options.proxy_resolution < 16 || g.options.proxy_resolution > 256)
+      in.fail("proxy resolution " + std::to_string(g.options.proxy_resolution));
+  }
+  if (s.flags > (h.version == 1 ? kFlagOpen : kFlagOpen | kFlagProxy | kFlagWideOpen))
+    in.fail("unknown summary flags " + std::to_string(s.flags));
   return h;
 }
 
@@ -234,13 +266,53 @@ void copy_section(ByteReader& in, void* to, std::size_t bytes) {
   if (bytes) std::memcpy(to, in.get_bytes(bytes).data(), bytes);
 }
 
+// A section of `count` floats, every value finite and in [lo, hi].
+void read_floats(ByteReader& in, std::uint32_t length, std::size_t count, const char* what,
+                 float lo, float hi, bool check_values, std::vector<float>& out) {
+  if (length != 4 * count)
+    in.fail(std::string(what) + " section of " + std::to_string(length) + " bytes, expected " +
+            std::to_string(4 * count));
+  out.resize(count);
+  if (kLittleEndianHost)
+    copy_section(in, out.data(), 4 * count);
+  else
+    for (float& x : out) x = in.get<float>();
+  if (check_values)
+    for (float x : out)
+      if (!std::isfinite(x) || x < lo || x > hi)
+        fail(std::string(what) + " holds a value out of range or not finite");
+}
+
+void read_sections(ByteReader& in, std::size_t end, ArgGraph& g, bool check_values) {
+  std::uint32_t last = 0;
+  while (in.offset() < end) {
+    const std::uint32_t tag = in.get<std::uint32_t>();
+    const std::uint32_t length = in.get<std::uint32_t>();
+    if (tag <= last) in.fail("sections out of order or repeated");
+    last = tag;
+    if (length > end - in.offset()) in.fail("section runs past the end of the value");
+    // Panorama features are means of values in [0, 1]; the spectrum is clamped to [1e-6, 1e3].
+    if (tag == kTagPanorama)
+      read_floats(in, length, kPanoramaSize, "panorama", 0.0f, 1.0001f, check_values, g.panorama);
+    else if (tag == kTagSpectrum)
+      read_floats(in, length, kSpectrumSize, "spectrum", 1e-6f, 1e3f, check_values, g.spectrum);
+    else
+      in.fail("unknown section tag " + std::to_string(tag));
+  }
+}
+
 }  // namespace
 
 std::string serialize_arg(const ArgGraph& g) {
+  const bool first = g.format == 1;
+  if (first && (!g.panorama.empty() || !g.spectrum.empty() || g.summary.flags > kFlagOpen))
+    throw InputError("ARG: a format-1 value cannot hold whole-shape sections or a proxy");
+  if (g.format != 1 && g.format != kFormatVersion)
+    throw InputError("ARG: cannot write format " + std::to_string(g.format));
   ByteWriter out;
   out.put_bytes(std::string_view(kMagic, 4));
-  out.put(kFormatVersion);
-  out.put(std::uint16_t(kHeaderSize));
+  out.put(g.format);
+  out.put(std::uint16_t(first ? kHeaderSize1 : kHeaderSize2));
   out.put(std::uint32_t(0));  // total size, patched below
   out.put(g.builder_version);
   out.put(std::uint64_t(0));  // digest, patched below
@@ -256,9 +328,22 @@ std::string serialize_arg(const ArgGraph& g) {
   for (std::size_t r = 0; r < kLevelSlots; ++r)
     out.put(r < g.level_begin.size() ? g.level_begin[r] : std::uint32_t(g.nodes.size()));
   for (float x : g.global) out.put(x);
+  if (!first) {
+    out.put(std::uint8_t(g.options.surface));
+    out.put(std::uint8_t(0));
+    out.put(std::uint16_t(g.options.proxy_resolution));
+  }
   for (const ArgNode& node : g.nodes) for_each_field(node, [&](auto x) { out.put(x); });
   for (auto c : g.children) out.put(c);
   for (auto j : g.adjacency) out.put(j);
+  auto section = [&](std::uint32_t tag, const std::vector<float>& values) {
+    if (values.empty()) return;
+    out.put(tag);
+    out.put(std::uint32_t(4 * values.size()));
+    for (float x : values) out.put(x);
+  };
+  section(kTagSpectrum, g.spectrum);  // tags in increasing order ("SPEC" < "PANO" as uint32)
+  section(kTagPanorama, g.panorama);
 
   std::string& bytes = out.bytes();
   ByteWriter size;
@@ -271,9 +356,9 @@ std::string serialize_arg(const ArgGraph& g) {
 }
 
 ArgGraph deserialize_arg(std::string_view bytes, bool check_digest) {
-  if (bytes.size() < kHeaderSize)
+  if (bytes.size() < kHeaderSize1)
     fail("value of " + std::to_string(bytes.size()) + " bytes is shorter than the header (" +
-         std::to_string(kHeaderSize) + ")");
+         std::to_string(kHeaderSize1) + ")");
   ArgGraph g;
   ByteReader in(bytes, "ARG");
   Header h = read_header(in, bytes, g, check_digest);
@@ -291,6 +376,7 @@ ArgGraph deserialize_arg(std::string_view bytes, bool check_digest) {
     for (auto& c : g.children) c = in.get<std::uint32_t>();
     for (auto& j : g.adjacency) j = in.get<std::uint32_t>();
   }
+  if (h.version != 1) read_sections(in, bytes.size(), g, check_digest);
   // Values out of range cannot make anything read out of bounds; a value that passed the full
   // check on input only needs the structural one.
   if (check_digest)
@@ -311,7 +397,7 @@ std::uint64_t arg_digest(std::string_view bytes) {
 }
 
 void reseal_arg_digest(std::string& bytes) {
-  if (bytes.size() < kHeaderSize) fail("value too short for a header");
+  if (bytes.size() < kHeaderSize1) fail("value too short for a header");
   ByteWriter digest;
   digest.put(content_digest(bytes));
   bytes.replace(kDigestAt, 8, digest.bytes());

@@ -9,10 +9,12 @@
 
 namespace arg {
 
-inline constexpr std::uint16_t kFormatVersion = 1;
+// The version this build writes; it reads 1 (no proxy option, no sections) and 2.
+inline constexpr std::uint16_t kFormatVersion = 2;
 
-// Little-endian bytes: header (magic, versions, options, counts, summary, global descriptor),
-// then node records, children and adjacency. Deterministic: equal graphs give equal bytes.
+// Little-endian bytes: header (magic, versions, options, counts, summary, global descriptor,
+// surface options), then node records, children, adjacency and tagged sections (the mu
+// histogram, the panorama). Deterministic: equal graphs give equal bytes.
 std::string serialize_arg(const ArgGraph& graph);
 
 // Strict reader: checks sizes, counts, ranges, ordering, links both ways, finiteness and the

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "features/laplace_spectrum.hpp"
+#include "features/panorama_descriptor.hpp"
 #include "match/mpair.hpp"
 #include "match/node_similarity.hpp"
 
@@ -31,6 +33,13 @@ int compare_graphs(const ArgGraph& a, const ArgGraph& b) {
   if (!a.adjacency.empty())
     if (int c = std::memcmp(a.adjacency.data(), b.adjacency.data(), 4 * a.adjacency.size()))
       return c;
+  for (std::vector<float> ArgGraph::*section : {&ArgGraph::panorama, &ArgGraph::spectrum}) {
+    const std::vector<float>& x = a.*section;
+    const std::vector<float>& y = b.*section;
+    if (x.size() != y.size()) return x.size() < y.size() ? -1 : 1;
+    if (!x.empty())
+      if (int c = std::memcmp(x.data(), y.data(), sizeof(float) * x.size())) return c;
+  }
   return 0;
 }
 
@@ -78,8 +87,8 @@ double similarity_ordered(const ArgGraph& x, const ArgGraph& y, const Weights& w
 
 }  // namespace
 
-double arg_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& weights,
-                      std::vector<MatchPair>* matches) {
+double graph_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& weights,
+                        std::vector<MatchPair>* matches) {
   // Colour is compared only when both models have some; otherwise it weighs nothing.
   Weights w = weights;
   if (!(a.summary.has_colour && b.summary.has_colour)) w.lambda_4 = 0;
@@ -88,6 +97,38 @@ double arg_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& weigh
   const double s = order > 0 ? similarity_ordered(b, a, w, matches, true)
                              : similarity_ordered(a, b, w, matches, false);
   return order == 0 ? 0.0 : s;
+}
+
+SimilarityParts similarity_parts(const ArgGraph& a, const ArgGraph& b, const Weights& w,
+                                 std::vector<MatchPair>* matches) {
+  SimilarityParts p;
+  p.w_graph = w.graph;
+  if (w.panorama > 0 && !a.panorama.empty() && !b.panorama.empty()) {
+    p.w_panorama = w.panorama;
+    p.panorama = panorama_distance(a.panorama, b.panorama);
+  }
+  // A proxy's spectrum is its shell's (gaps closed, near parts fused) and a wide-open
+  // surface's is that of its openings as much as of its shape, so, like colour without
+  // colour, the spectra then weigh nothing (such values are built without one anyway).
+  const bool own_surfaces = !((a.summary.flags | b.summary.flags) & (kFlagProxy | kFlagWideOpen));
+  if (w.spectrum > 0 && own_surfaces && !a.spectrum.empty() && !b.spectrum.empty()) {
+    p.w_spectrum = w.spectrum;
+    p.spectrum = spectrum_distance(a.spectrum, b.spectrum);
+  }
+  // Values without the whole-shape sections (format 1) fall back on the graph alone.
+  if (p.w_graph + p.w_panorama + p.w_spectrum <= 0) p.w_graph = 1;
+  if (p.w_graph > 0 || matches) p.graph = graph_similarity(a, b, w, matches);
+  const double total = p.w_graph + p.w_panorama + p.w_spectrum;
+  p.sim = std::clamp(
+      (p.w_graph * p.graph + p.w_panorama * p.panorama + p.w_spectrum * p.spectrum) / total, 0.0,
+      1.0);
+  return p;
+}
+
+double arg_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& weights,
+                      std::vector<MatchPair>* matches) {
+  if (!matches && compare_graphs(a, b) == 0) return 0.0;  // identical: self-identity exactly
+  return similarity_parts(a, b, weights, matches).sim;
 }
 
 }  // namespace arg

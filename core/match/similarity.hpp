@@ -20,9 +20,26 @@ struct MatchPair {
   double sim = 0;  // contribution to the numerator of SIM (shared by the group's rows)
 };
 
-// SIM(A, B) in [0, 1]: 0 for identical graphs, exactly symmetric. Fills `matches` if given.
+// SIM(A, B) in [0, 1]: 0 for identical values, exactly symmetric. The weighted mean of the
+// graph's SIM and the whole-shape distances (Weights::graph, panorama, spectrum); a term one
+// of the values lacks is left out. Fills `matches` (the graph's node pairs) if given.
 double arg_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& weights = {},
                       std::vector<MatchPair>* matches = nullptr);
+
+// The graph's own SIM (Hilaga et al., Tung and Schmitt): 1 - matched sim over self sim, in
+// [0, 1], 0 for identical graphs, exactly symmetric. Fills `matches` if given.
+double graph_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& weights = {},
+                        std::vector<MatchPair>* matches = nullptr);
+
+// The terms of arg_similarity: each distance in [0, 1] and the weight it got (0 when left out);
+// sim = sum of weight x distance over the sum of weights.
+struct SimilarityParts {
+  double graph = 0, panorama = 0, spectrum = 0;
+  double w_graph = 0, w_panorama = 0, w_spectrum = 0;
+  double sim = 0;
+};
+SimilarityParts similarity_parts(const ArgGraph& a, const ArgGraph& b, const Weights& weights,
+                                 std::vector<MatchPair>* matches = nullptr);
 
 struct PartMatch {
   int level = 0;

@@ -1,4 +1,4 @@
-// SIM split into the terms of sim (a, l, v, cords, curvature, colour), to explain a score.
+// The graph's SIM split into the terms of sim (a, l, v, cords, curvature, colour), to explain it.
 #pragma once
 
 #include <vector>
@@ -10,14 +10,14 @@
 namespace arg {
 
 // Each term's weighted sum of minima over the matched groups, divided by SIM's denominator:
-// 1 - SIM = a + l + v + cords + curvature + colour (before SIM's clamp to [0, 1]).
+// 1 - graph_similarity = a + l + v + cords + curvature + colour (before its clamp to [0, 1]).
 struct SimilarityTerms {
   double a = 0, l = 0, v = 0, cords = 0, curvature = 0, colour = 0;
 
   double total() const { return a + l + v + cords + curvature + colour; }
 };
 
-// Splits the score of `matches` (as filled by arg_similarity(a, b, weights, &matches)) into its
+// Splits the score of `matches` (as filled by graph_similarity or arg_similarity) into its
 // terms, with the same weights and the same rule that colour weighs nothing unless both
 // models have colour.
 SimilarityTerms similarity_terms(const ArgGraph& a, const ArgGraph& b, const Weights& weights,

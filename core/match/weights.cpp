@@ -26,8 +26,14 @@ constexpr Field kFields[] = {
     {"eps_l", &Weights::eps_l},       {"alpha_s", &Weights::alpha_s},
     {"beta_s", &Weights::beta_s},     {"lambda_1", &Weights::lambda_1},
     {"lambda_2", &Weights::lambda_2}, {"lambda_3", &Weights::lambda_3},
-    {"lambda_4", &Weights::lambda_4},
+    {"lambda_4", &Weights::lambda_4}, {"graph", &Weights::graph},
+    {"panorama", &Weights::panorama}, {"spectrum", &Weights::spectrum},
 };
+
+bool is_mixing(const Field& f) {
+  return f.member == &Weights::graph || f.member == &Weights::panorama ||
+         f.member == &Weights::spectrum;
+}
 
 bool try_preset(std::string_view name, Weights& w) {
   const Weights arg;  // the defaults: see weights.hpp
@@ -39,8 +45,14 @@ bool try_preset(std::string_view name, Weights& w) {
     w.gamma_l = w.delta_l = w.eps_l = 0;
     w.alpha_s = w.beta_s = 0.5f;
     w.lambda_1 = w.lambda_2 = w.lambda_3 = w.lambda_4 = 0;
+    w.graph = 1;
+    w.panorama = w.spectrum = 0;
     w.tung_rule = false;
     w.groups = true;
+  } else if (name == "graph") {  // the augmented graph alone, without whole-shape terms
+    w = arg;
+    w.graph = 1;
+    w.panorama = w.spectrum = 0;
   } else if (name == "shape") {  // geometry and features, colour ignored
     w = arg;
     w.lambda_4 = 0;
@@ -62,15 +74,26 @@ void validate(const Weights& w) {
   if (w.alpha_s + w.beta_s + w.lambda_1 + w.lambda_2 + w.lambda_3 + w.lambda_4 <= 0)
     throw InputError(std::string(kWhat) +
                      ": at least one of alpha_s, beta_s, lambda_1..lambda_4 must be positive");
+  if (w.graph + w.panorama + w.spectrum <= 0)
+    throw InputError(std::string(kWhat) +
+                     ": at least one of graph, panorama, spectrum must be positive");
 }
 
 }  // namespace
+
+float mixing_weight(int steps) {
+  return float(steps * kMixingStep);
+}
+
+int mixing_steps(float weight) {
+  return int(std::lround(double(weight) / kMixingStep));
+}
 
 Weights weights_preset(std::string_view name) {
   Weights w;
   if (!try_preset(name, w))
     throw InputError(std::string(kWhat) + ": unknown preset \"" + std::string(name) +
-                     "\" (expected arg, mrg, shape or colour)");
+                     "\" (expected arg, mrg, graph, shape or colour)");
   return w;
 }
 
@@ -83,7 +106,8 @@ Weights parse_weights(std::string_view text) {
     const auto& [key, value] = pairs[i];
     if (value.empty()) {
       if (i != 0 || !try_preset(key, w))
-        throw InputError("weights: \"" + key + "\" is not a preset (arg, mrg, shape, colour) " +
+        throw InputError("weights: \"" + key +
+                         "\" is not a preset (arg, mrg, graph, shape, colour) " +
                          (i != 0 ? "or the preset is not first" : "nor key=value"));
       continue;
     }
@@ -118,15 +142,24 @@ Weights parse_weights(std::string_view text) {
     for (const Field& f : kFields)
       if (key == f.name) {
         double x = parse_finite_number(value, key, kWhat);
-        if (x < 0 || x > 1e6)
-          throw InputError("weights: " + key + "=" + value + " must be in [0, 1e6]");
-        w.*f.member = float(x);
+        if (is_mixing(f)) {
+          // Stored in a byte each (arg_weights keeps its 48 bytes): steps of kMixingStep.
+          const double steps = std::round(x / kMixingStep);
+          if (x < 0 || steps > 255 || std::fabs(x / kMixingStep - steps) > 1e-6)
+            throw InputError("weights: " + key + "=" + value +
+                             " must be a multiple of 0.05 in [0, 12.75]");
+          w.*f.member = mixing_weight(int(steps));
+        } else {
+          if (x < 0 || x > 1e6)
+            throw InputError("weights: " + key + "=" + value + " must be in [0, 1e6]");
+          w.*f.member = float(x);
+        }
         known = true;
       }
     if (!known)
       throw InputError("weights: unknown key \"" + key +
                        "\" (expected alpha_l beta_l gamma_l delta_l eps_l alpha_s beta_s "
-                       "lambda_1..lambda_4 norm tung groups)");
+                       "lambda_1..lambda_4 graph panorama spectrum norm tung groups)");
   }
   validate(w);
   return w;

@@ -6,9 +6,10 @@
 
 namespace arg {
 
-// The defaults are the `arg` preset: the paper's section 6 loss and sim weights, and feature
-// weights chosen on SHREC 2007 (docs/BENCHMARKS.md): curvature and cords carry most of the
-// class information, relative volume a little; colour counts as much as a and l together.
+// The defaults are the `arg` preset: the paper's section 6 loss and sim weights, feature weights
+// chosen on SHREC 2007 in 0.1.0 (curvature and cords carry most of the class information,
+// relative volume a little; colour counts as much as a and l together), and the mixing of the
+// graph with the whole-shape terms (below).
 struct Weights {
   // loss(m, n): alpha_l|a-a'| + beta_l|l-l'| + gamma_l|r-r'| + delta_l|theta-theta'| +
   // eps_l|phi-phi'|
@@ -17,6 +18,14 @@ struct Weights {
   //            + lambda_3 min(curvature) + lambda_4 min(colour)
   float alpha_s = 0.65f, beta_s = 0.35f;
   float lambda_1 = 0.3f, lambda_2 = 1.0f, lambda_3 = 3.0f, lambda_4 = 1.0f;
+  // SIM = (graph SIM_graph + panorama D_panorama + spectrum D_spectrum) / (graph + panorama +
+  // spectrum): the graph matching above, the view-based PANORAMA distance and the distance of
+  // the Laplace-Beltrami spectra (each in [0, 1]); a term a value lacks (format 1) is left out,
+  // and so is the spectra's when either model was built on its watertight proxy or is wide open.
+  // The defaults (graph 1, panorama 3, spectrum 1) were chosen by leave-one-set-out tuning
+  // of these three on SHREC 2007, SHREC 2011 and the PSB soups (argtool tune --mixing-only,
+  // docs/BENCHMARKS.md); the graph's own weights above stay those of 0.1.0.
+  float graph = 1.0f, panorama = 3.0f, spectrum = 1.0f;
   bool l2 = false;        // squared differences in the loss instead of absolute ones
   bool tung_rule = true;  // Tung and Schmitt's extra consistency rule (off for Hilaga's MRG)
   bool groups = false;    // a node may match a group of nodes of its interval (Hilaga's MRG)
@@ -27,8 +36,15 @@ Weights weights_preset(std::string_view name);
 
 // A preset name, or "key=value" pairs separated by spaces or commas, optionally after a preset
 // ("shape lambda_4=0.1"). Keys: alpha_l beta_l gamma_l delta_l eps_l alpha_s beta_s lambda_1..4
-// norm=l1|l2 tung=on|off groups=on|off. Values finite and >= 0, at least one sim weight positive.
+// graph panorama spectrum norm=l1|l2 tung=on|off groups=on|off. Values finite and >= 0, at
+// least one sim weight and one of graph, panorama, spectrum positive.
 Weights parse_weights(std::string_view text);
+
+// graph, panorama and spectrum are multiples of this in [0, 255 steps]: the SQL type keeps
+// each in one byte. mixing_weight(k) is the float for k steps; mixing_steps inverts it.
+inline constexpr double kMixingStep = 0.05;
+float mixing_weight(int steps);
+int mixing_steps(float weight);
 
 // Canonical text form; parse_weights(format_weights(w)) == w.
 std::string format_weights(const Weights& w);

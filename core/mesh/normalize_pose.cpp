@@ -6,6 +6,25 @@
 
 namespace arg {
 
+void orient_by_third_moment(const Mesh& mesh, const Eigen::Vector3d& centre, double rms,
+                            Eigen::Matrix3d& axes) {
+  const auto& V = mesh.V;
+  const auto& F = mesh.F;
+  // Third moments along each axis, from the triangle centroids (exact enough for a sign).
+  Eigen::Vector3d third = Eigen::Vector3d::Zero();
+  double area = 0;
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    Eigen::Vector3d a = V.row(F(f, 0)).transpose(), b = V.row(F(f, 1)).transpose(),
+                    c = V.row(F(f, 2)).transpose();
+    double A = 0.5 * (b - a).cross(c - a).norm();
+    Eigen::Vector3d p = axes * ((a + b + c) / 3.0 - centre);
+    third += A * p.cwiseProduct(p).cwiseProduct(p);
+    area += A;
+  }
+  for (int k = 0; k < 3; ++k)
+    if (third[k] < -1e-9 * area * rms * rms * rms) axes.row(k) *= -1.0;
+}
+
 Pose surface_pose(const Mesh& mesh) {
   const auto& V = mesh.V;
   const auto& F = mesh.F;
@@ -35,18 +54,8 @@ Pose surface_pose(const Mesh& mesh) {
     axes.row(k) = solver.eigenvectors().col(2 - k).transpose();
     pose.eigenvalues[k] = std::max(0.0, solver.eigenvalues()[2 - k]);
   }
-  // Third moments along each axis, from the triangle centroids (exact enough for a sign).
-  Eigen::Vector3d third = Eigen::Vector3d::Zero();
-  for (Eigen::Index f = 0; f < F.rows(); ++f) {
-    Eigen::Vector3d a = V.row(F(f, 0)).transpose(), b = V.row(F(f, 1)).transpose(),
-                    c = V.row(F(f, 2)).transpose();
-    double A = 0.5 * (b - a).cross(c - a).norm();
-    Eigen::Vector3d p = axes * ((a + b + c) / 3.0 - pose.centre);
-    third += A * p.cwiseProduct(p).cwiseProduct(p);
-  }
   const double rms = std::sqrt(std::max(cov.trace(), 0.0));
-  for (int k = 0; k < 3; ++k)
-    if (third[k] < -1e-9 * area * rms * rms * rms) axes.row(k) *= -1.0;
+  orient_by_third_moment(mesh, pose.centre, rms, axes);
   pose.rotation = axes;
   pose.scale = rms > 0 ? 1.0 / rms : 1.0;
   return pose;

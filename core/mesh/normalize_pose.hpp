@@ -20,6 +20,11 @@ struct Pose {
 // images get the same frame; an axis with a vanishing third moment keeps the solver's sign.
 Pose surface_pose(const Mesh& mesh);
 
+// Flips the rows of `axes` so that the surface's third moment about `centre` along each is not
+// negative (below -1e-9 area rms^3 counts as negative); the rule surface_pose uses.
+void orient_by_third_moment(const Mesh& mesh, const Eigen::Vector3d& centre, double rms,
+                            Eigen::Matrix3d& axes);
+
 // Applies a pose: V' = scale * rotation * (V - centre).
 Mesh apply_pose(const Mesh& mesh, const Pose& pose);
 

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "build/node_positions.hpp"
 #include "match/similarity.hpp"
+#include "pipeline/node_positions.hpp"
 #include "render/canvas.hpp"
 #include "render/rasterise_mesh.hpp"
 #include "render/view_camera.hpp"

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "build/node_positions.hpp"
+#include "pipeline/node_positions.hpp"
 #include "render/canvas.hpp"
 #include "render/graph_overlay.hpp"
 #include "render/rasterise_mesh.hpp"

@@ -3,11 +3,11 @@
 // With the digest checked, what the reader accepts must serialise back unchanged. Without it (a
 // stored value read back, serialize.hpp), node values are not checked and mutated bytes reach the
 // structural checks directly; whatever passes them must be safe to match.
-#include "build/build_arg.hpp"
 #include "fuzz_support.hpp"
 #include "gen/generate_models.hpp"
 #include "graph/serialize.hpp"
 #include "match/similarity.hpp"
+#include "pipeline/build_arg.hpp"
 
 namespace arg::fuzz {
 

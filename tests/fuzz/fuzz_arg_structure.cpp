@@ -13,11 +13,11 @@
 #include <algorithm>
 #include <vector>
 
-#include "build/build_arg.hpp"
 #include "fuzz_support.hpp"
 #include "gen/generate_models.hpp"
 #include "graph/serialize.hpp"
 #include "match/similarity.hpp"
+#include "pipeline/build_arg.hpp"
 
 namespace arg::fuzz {
 

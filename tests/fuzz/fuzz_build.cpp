@@ -1,9 +1,9 @@
 // libFuzzer target: build_arg_bytes on small meshes of any format, checking the ARG it returns.
-#include "build/build_arg.hpp"
 #include "fuzz_support.hpp"
 #include "gen/generate_models.hpp"
 #include "graph/serialize.hpp"
 #include "match/similarity.hpp"
+#include "pipeline/build_arg.hpp"
 
 namespace arg::fuzz {
 

@@ -66,6 +66,10 @@ cp "$work/ply/fourleg_00.ply" "$corpus/fuzz_build/gen_fourleg.ply"
 cp "$work/stl/human_00.stl" "$corpus/fuzz_build/gen_human.stl"
 cp "$work/obj/human_00.obj" "$corpus/fuzz_build/gen_human.obj"
 
+# Format-1 values as arg 0.1.0 wrote them (the unit tests' fixtures) stay seeds of the readers.
+for f in "$root"/tests/unit/fixtures/format1/*.arg; do
+  cp "$f" "$work/arg/v1_$(basename "$f")"
+done
 python3 "$here/make_seeds.py" "$work" "$corpus"
 
 # A GLB for the build target too, converted above from the generated human.

@@ -4,10 +4,10 @@
 #include <algorithm>
 #include <iostream>
 
-#include "build/build_arg.hpp"
 #include "eval/retrieval_metrics.hpp"
 #include "gen/generate_models.hpp"
 #include "match/similarity.hpp"
+#include "pipeline/build_arg.hpp"
 
 using namespace arg;
 

@@ -3,11 +3,11 @@
 
 #include <chrono>
 
-#include "build/build_arg.hpp"
 #include "common/errors.hpp"
 #include "graph/serialize.hpp"
 #include "match/similarity.hpp"
 #include "mesh/clean_mesh.hpp"
+#include "pipeline/build_arg.hpp"
 #include "test_shapes.hpp"
 
 using namespace arg;

@@ -5,10 +5,10 @@
 #include <numeric>
 #include <set>
 
-#include "build/build_arg.hpp"
-#include "build/node_positions.hpp"
 #include "gen/generate_models.hpp"
 #include "match/similarity.hpp"
+#include "pipeline/build_arg.hpp"
+#include "pipeline/node_positions.hpp"
 
 using namespace arg;
 

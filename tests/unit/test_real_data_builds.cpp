@@ -10,9 +10,9 @@
 #include <sstream>
 #include <thread>
 
-#include "build/build_arg.hpp"
 #include "graph/serialize.hpp"
 #include "match/similarity.hpp"
+#include "pipeline/build_arg.hpp"
 
 namespace fs = std::filesystem;
 using namespace arg;

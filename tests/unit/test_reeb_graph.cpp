@@ -6,13 +6,13 @@
 #include <map>
 #include <numeric>
 
-#include "build/build_arg.hpp"
 #include "common/errors.hpp"
 #include "graph/serialize.hpp"
 #include "mesh/clean_mesh.hpp"
 #include "mesh/mesh_edges.hpp"
 #include "mesh/normalize_pose.hpp"
 #include "mu/mu_function.hpp"
+#include "pipeline/build_arg.hpp"
 #include "test_shapes.hpp"
 
 using namespace arg;

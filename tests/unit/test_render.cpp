@@ -13,13 +13,13 @@
 #include <string>
 #include <vector>
 
-#include "build/build_arg.hpp"
-#include "build/node_positions.hpp"
 #include "common/errors.hpp"
 #include "gen/generate_models.hpp"
 #include "match/similarity.hpp"
 #include "match/similarity_terms.hpp"
 #include "oiio/write_png.hpp"
+#include "pipeline/build_arg.hpp"
+#include "pipeline/node_positions.hpp"
 #include "reeb/slice_intervals.hpp"
 #include "render/bitmap_font.hpp"
 #include "render/colour_map.hpp"
@@ -325,13 +325,13 @@ TEST(Render, ColourMapsAreOrderedAndDistinct) {
   EXPECT_EQ(seen.size(), 36u);
 }
 
-TEST(Render, SimilarityTermsAddUpToOneMinusSim) {
+TEST(Render, SimilarityTermsAddUpToOneMinusTheGraphsSim) {
   const Weights w;
   const Model &a = model("human", 0), &b = model("human", 1), &c = model("cup", 0);
   for (const auto& [x, y] : {std::make_pair(&a, &b), std::make_pair(&b, &a), std::make_pair(&a, &c),
                              std::make_pair(&a, &a)}) {
     std::vector<MatchPair> pairs;
-    const double sim = arg_similarity(x->graph, y->graph, w, &pairs);
+    const double sim = graph_similarity(x->graph, y->graph, w, &pairs);
     const SimilarityTerms t = similarity_terms(x->graph, y->graph, w, pairs);
     // SIM of a graph with itself is 0 by definition; the terms sum float histograms whose
     // totals equal the node areas only to rounding.

@@ -4,10 +4,10 @@
 #include <set>
 #include <tuple>
 
-#include "build/build_arg.hpp"
 #include "common/errors.hpp"
 #include "match/similarity.hpp"
 #include "match/weights.hpp"
+#include "pipeline/build_arg.hpp"
 #include "test_shapes.hpp"
 
 using namespace arg;

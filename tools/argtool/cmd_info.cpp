@@ -33,7 +33,10 @@ nlohmann::json describe(const argtool::LoadedArg& loaded) {
   j["genus_estimate"] = g.summary.genus;
   j["components"] = g.summary.components;
   j["has_colour"] = bool(g.summary.has_colour);
-  j["open"] = bool(g.summary.flags & 1);
+  j["open"] = bool(g.summary.flags & arg::kFlagOpen);
+  j["proxy"] = bool(g.summary.flags & arg::kFlagProxy);
+  j["wide_open"] = bool(g.summary.flags & arg::kFlagWideOpen);
+  j["format_version"] = g.format;
   j["options"] = arg::format_build_options(g.options);
   j["builder_version"] = g.builder_version;
   j["bytes"] = loaded.bytes.size();

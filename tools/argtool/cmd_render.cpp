@@ -4,10 +4,10 @@
 #include <filesystem>
 #include <memory>
 
-#include "build/node_positions.hpp"
 #include "command_registry.hpp"
 #include "load_arg.hpp"
 #include "oiio/write_png.hpp"
+#include "pipeline/node_positions.hpp"
 #include "render/graph_svg.hpp"
 #include "render/render_model.hpp"
 #include "render_input.hpp"

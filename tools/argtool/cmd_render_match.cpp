@@ -44,7 +44,7 @@ std::vector<std::string> wrap(const std::string& head, const std::vector<std::st
   return lines;
 }
 
-// "1 - SIM = 0.55 = curvature 0.21 + cords 0.12 + ...", the largest terms first.
+// "1 - graph SIM = 0.55 = curvature 0.21 + cords 0.12 + ...", the largest terms first.
 std::vector<std::string> term_lines(const arg::SimilarityTerms& t, double sim, std::size_t width) {
   std::vector<std::pair<std::string, double>> terms = {
       {"a", t.a},          {"l", t.l}, {"v", t.v}, {"cords", t.cords}, {"curvature", t.curvature},
@@ -54,7 +54,7 @@ std::vector<std::string> term_lines(const arg::SimilarityTerms& t, double sim, s
   std::vector<std::string> items;
   for (std::size_t k = 0; k < terms.size(); ++k)
     items.push_back((k ? "+ " : "") + terms[k].first + " " + fixed(terms[k].second, 4));
-  return wrap("1 - SIM = " + fixed(1 - sim, 4) + " =", items, width);
+  return wrap("1 - graph SIM = " + fixed(1 - sim, 4) + " =", items, width);
 }
 
 int run_render_match(const RenderMatchArgs& a) {
@@ -66,7 +66,8 @@ int run_render_match(const RenderMatchArgs& a) {
   const argtool::RenderInput x = argtool::load_render_input(a.a, a.options),
                              y = argtool::load_render_input(a.b, a.options);
   std::vector<arg::MatchPair> pairs;
-  const double sim = arg::arg_similarity(x.graph, y.graph, w, &pairs);
+  const arg::SimilarityParts parts = arg::similarity_parts(x.graph, y.graph, w, &pairs);
+  const double sim = arg::arg_similarity(x.graph, y.graph, w);
   const arg::SimilarityTerms terms = arg::similarity_terms(x.graph, y.graph, w, pairs);
 
   arg::MatchPictureOptions mo;
@@ -79,7 +80,11 @@ int run_render_match(const RenderMatchArgs& a) {
   const int ts = arg::text_scale_for(a.size, a.size);
   const auto width = std::size_t((2 * a.size - 8 * ts) / (arg::kGlyphAdvance * ts));
   mo.notes.push_back("SIM(A, B) = " + fixed(sim, 4) + "   (weights " + a.weights + ")");
-  for (const std::string& line : term_lines(terms, sim, width)) mo.notes.push_back(line);
+  mo.notes.push_back("= mean of graph " + fixed(parts.graph, 4) + " (x" + fixed(parts.w_graph, 2) +
+                     "), panorama " + fixed(parts.panorama, 4) + " (x" +
+                     fixed(parts.w_panorama, 2) + "), spectrum " + fixed(parts.spectrum, 4) +
+                     " (x" + fixed(parts.w_spectrum, 2) + ")");
+  for (const std::string& line : term_lines(terms, parts.graph, width)) mo.notes.push_back(line);
 
   // The best pairs at the drawn level, as numbered in the picture.
   std::map<int, std::pair<std::vector<int>, std::vector<int>>> members;
@@ -132,7 +137,8 @@ const bool registered = argtool::register_command(
       app.add_option("a", a->a, "first mesh file")->required()->check(CLI::ExistingFile);
       app.add_option("b", a->b, "second mesh file")->required()->check(CLI::ExistingFile);
       app.add_option("-o,--output", a->output, "PNG to write")->required();
-      app.add_option("--weights", a->weights, "preset (arg, mrg, shape, colour) or key=value text")
+      app.add_option("--weights", a->weights,
+                     "preset (arg, mrg, graph, shape, colour) or key=value text")
           ->capture_default_str();
       app.add_option("--level", a->level, "level whose matched pairs are drawn")
           ->check(CLI::Range(0, arg::kMaxLevels))

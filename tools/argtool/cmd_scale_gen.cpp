@@ -20,7 +20,6 @@
 #include <thread>
 #include <vector>
 
-#include "build/build_arg.hpp"
 #include "command_registry.hpp"
 #include "eval/label_file.hpp"
 #include "eval_models.hpp"
@@ -29,6 +28,7 @@
 #include "gen/seeded_random.hpp"
 #include "graph/serialize.hpp"
 #include "load_arg.hpp"
+#include "pipeline/build_arg.hpp"
 
 namespace {
 
@@ -118,8 +118,7 @@ int run_scale_gen(ScaleArgs& a) {
           } else {
             const arg::LabelledModel& m = set.models[std::size_t(i)];
             argtool::Model model;
-            argtool::prepare_model(model, (root / m.path).string(), a.options, a.cache, true, false,
-                                   false);
+            argtool::prepare_model(model, (root / m.path).string(), a.options, a.cache, true);
             if (!model.error.empty()) throw std::runtime_error(model.error);
             row = metadata(a, std::stoll(m.id)) + m.label + '\t' +
                   arg::arg_to_text(arg::serialize_arg(model.graph)) + '\n';

@@ -20,8 +20,9 @@ const bool registered = argtool::register_command(
       auto a = std::make_shared<SimArgs>();
       app.add_option("a", a->a, "first model")->required()->check(CLI::ExistingFile);
       app.add_option("b", a->b, "second model")->required()->check(CLI::ExistingFile);
-      app.add_option("--weights", a->weights, "preset (arg, mrg, shape, colour) or key=value text");
-      app.add_flag("--explain", a->explain, "list the matched node pairs");
+      app.add_option("--weights", a->weights,
+                     "preset (arg, mrg, graph, shape, colour) or key=value text");
+      app.add_flag("--explain", a->explain, "the terms of SIM and the graph's matched node pairs");
       argtool::add_build_flags(app, a->options);
       return [a] {
         arg::Weights w = arg::parse_weights(a->weights);
@@ -31,6 +32,10 @@ const bool registered = argtool::register_command(
         double s = arg::arg_similarity(x.graph, y.graph, w, a->explain ? &pairs : nullptr);
         std::printf("%.6f\n", s);
         if (a->explain) {
+          const arg::SimilarityParts p = arg::similarity_parts(x.graph, y.graph, w);
+          std::printf(
+              "graph %.6f (weight %g)  panorama %.6f (weight %g)  spectrum %.6f (weight %g)\n",
+              p.graph, p.w_graph, p.panorama, p.w_panorama, p.spectrum, p.w_spectrum);
           std::printf("level  a_node  b_node  group      loss       sim\n");
           for (const auto& p : pairs)
             std::printf("%5d  %6d  %6d  %5d  %8.5f  %8.5f\n", p.level, p.a_node, p.b_node, p.group,

@@ -1,8 +1,10 @@
-// argtool tune: learn the weights on training folds, report mAP on the held-out folds.
+// argtool tune: learn the weights on some models or sets, report the scores on the ones held out.
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
+#include <map>
 #include <memory>
 #include <thread>
 
@@ -11,6 +13,8 @@
 #include "eval/retrieval_metrics.hpp"
 #include "eval/weight_search.hpp"
 #include "eval_models.hpp"
+#include "features/laplace_spectrum.hpp"
+#include "features/panorama_descriptor.hpp"
 #include "load_arg.hpp"
 #include "match/similarity.hpp"
 #include "progress_bar.hpp"
@@ -20,103 +24,241 @@ namespace fs = std::filesystem;
 namespace {
 
 struct TuneArgs {
-  std::string labels, root, cache, start = "arg";
+  std::vector<std::string> labels;
+  std::string root, cache, start = "arg", objective = "map";
   int folds = 2, rounds = 3;
+  bool mixing_only = false;
   int threads = int(std::max(1u, std::thread::hardware_concurrency()));
   arg::BuildOptions options;
 };
 
-// Retrieval scores when the models `members` query each other only.
-arg::RetrievalScores scores_within(const std::vector<argtool::Model>& models,
-                                   const arg::LabelSet& set, const std::vector<int>& members,
-                                   const arg::Weights& w, int threads) {
-  const std::size_t n = members.size();
+// One labelled set with its models and the pairwise distances that do not depend on weights.
+struct Set {
+  std::string name;
+  arg::LabelSet labels;
+  std::vector<argtool::Model> models;
+  std::vector<double> panorama, spectrum;  // n x n, in [0, 1]; spectrum -1: left out
+};
+
+// Graph SIM matrices of every set for one choice of the graph's own weights, kept between the
+// objective's calls: the mixing weights only recombine them.
+class GraphCache {
+ public:
+  GraphCache(const std::vector<Set>& sets, int threads) : sets_(sets), threads_(threads) {}
+
+  const std::vector<double>& get(std::size_t set, const std::vector<int>& members,
+                                 const arg::Weights& w) {
+    arg::Weights key_weights = w;
+    key_weights.graph = 1, key_weights.panorama = key_weights.spectrum = 0;
+    const std::string key = std::to_string(set) + "/" + std::to_string(members.size()) + "/" +
+                            std::to_string(members.empty() ? -1 : members.front()) + "/" +
+                            arg::format_weights(key_weights);
+    auto found = cache_.find(key);
+    if (found != cache_.end()) return found->second;
+    if (cache_.size() > 64) cache_.clear();
+    const auto& models = sets_[set].models;
+    const std::size_t n = members.size();
+    std::vector<double> d(n * n, 0.0);
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+      for (std::size_t i = next++; i < n; i = next++)
+        for (std::size_t j = i + 1; j < n; ++j) {
+          const auto& a = models[std::size_t(members[i])];
+          const auto& b = models[std::size_t(members[j])];
+          if (a.error.empty() && b.error.empty())
+            d[i * n + j] = d[j * n + i] = arg::graph_similarity(a.graph, b.graph, key_weights);
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads_; ++t) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
+    return cache_[key] = std::move(d);
+  }
+
+ private:
+  const std::vector<Set>& sets_;
+  int threads_;
+  std::map<std::string, std::vector<double>> cache_;
+};
+
+// Retrieval scores of `members` of one set querying each other, with SIM combined as
+// arg_similarity does.
+arg::RetrievalScores scores_within(const Set& s, const std::vector<int>& members,
+                                   const arg::Weights& w, GraphCache& graphs, std::size_t index) {
+  const std::size_t n = members.size(), all = s.models.size();
   std::vector<double> distance(n * n, 0.0);
   std::vector<int> label(n);
   std::vector<bool> valid(n);
+  // Without graph and panorama weights a pair of proxy models has nothing left but the graph,
+  // on which arg_similarity then falls back.
+  const bool need_graph = w.graph > 0 || w.panorama <= 0;
+  const std::vector<double>* g = need_graph ? &graphs.get(index, members, w) : nullptr;
   for (std::size_t i = 0; i < n; ++i) {
-    label[i] = set.class_of[std::size_t(members[i])];
-    valid[i] = models[std::size_t(members[i])].error.empty();
+    const std::size_t mi = std::size_t(members[i]);
+    label[i] = s.labels.class_of[mi];
+    valid[i] = s.models[mi].error.empty();
+    for (std::size_t j = 0; j < n; ++j) {
+      if (i == j) continue;
+      const std::size_t mj = std::size_t(members[j]);
+      const double spectrum = s.spectrum[mi * all + mj];
+      const double w_spectrum = spectrum < 0 ? 0.0 : double(w.spectrum);
+      double d = w.panorama * s.panorama[mi * all + mj] + w_spectrum * std::max(spectrum, 0.0);
+      if (g) d += w.graph * (*g)[i * n + j];
+      const double total = double(w.graph) + w.panorama + w_spectrum;
+      distance[i * n + j] = total > 0 ? d / total : (*g)[i * n + j];
+    }
   }
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    for (std::size_t i = next++; i < n; i = next++)
-      for (std::size_t j = i + 1; j < n; ++j)
-        if (valid[i] && valid[j])
-          distance[i * n + j] = distance[j * n + i] = arg::arg_similarity(
-              models[std::size_t(members[i])].graph, models[std::size_t(members[j])].graph, w);
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  return arg::retrieval_scores(distance, label, int(set.classes.size()), valid);
+  return arg::retrieval_scores(distance, label, int(s.labels.classes.size()), valid);
+}
+
+double objective_of(const arg::RetrievalScores& r, const std::string& objective) {
+  return objective == "psb" ? (r.nn + r.ft + r.dcg) / 3.0 : r.map;
+}
+
+std::string row(const char* what, const std::string& set, const arg::RetrievalScores& r) {
+  char line[200];
+  std::snprintf(line, sizeof line, "%-26s %-10s NN %.3f  FT %.3f  ST %.3f  DCG %.3f  mAP %.3f",
+                what, set.c_str(), r.nn, r.ft, r.st, r.dcg, r.map);
+  return line;
+}
+
+std::vector<int> everyone(const Set& s) {
+  std::vector<int> all(s.models.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = int(i);
+  return all;
 }
 
 const bool registered = argtool::register_command(
-    "tune", "learn the matching weights (coordinate search on mAP) with cross-validation",
+    "tune",
+    "learn the weights (coordinate search): with several sets, leave one set out and score on "
+    "it; with one, cross-validate over folds",
     [](CLI::App& app) {
       auto a = std::make_shared<TuneArgs>();
-      app.add_option("--labels", a->labels, "CSV with header model_id,path,class")
+      app.add_option("--labels", a->labels, "CSV with header model_id,path,class (repeatable)")
           ->required()
           ->check(CLI::ExistingFile);
       app.add_option("--root", a->root,
-                     "folder the paths are relative to (default: the CSV's folder)");
-      app.add_option("--folds", a->folds, "cross-validation folds (stratified by class)")
+                     "folder the paths are relative to (default: each CSV's folder; one set only)");
+      app.add_option("--folds", a->folds, "cross-validation folds with one set (stratified)")
           ->check(CLI::Range(2, 10));
       app.add_option("--rounds", a->rounds, "passes of the coordinate search")
           ->check(CLI::Range(1, 10));
       app.add_option("--start", a->start, "weights to start from (preset or key=value text)");
+      app.add_option("--objective", a->objective,
+                     "map (mean average precision) or psb (mean of NN, FT and DCG), averaged "
+                     "over the training sets")
+          ->check(CLI::IsMember({"map", "psb"}));
+      app.add_flag("--mixing-only", a->mixing_only,
+                   "search only the graph, panorama and spectrum weights, on a coarse grid "
+                   "(the graph's own weights stay as in --start)");
       app.add_option("--threads", a->threads, "worker threads")->check(CLI::Range(1, 256));
       app.add_option("--cache", a->cache, "folder caching built ARGs between runs");
       argtool::add_build_flags(app, a->options, false);
       return [a] {
-        arg::LabelSet set = arg::parse_label_csv(argtool::read_file_bytes(a->labels));
-        fs::path root = a->root.empty() ? fs::path(a->labels).parent_path() : fs::path(a->root);
+        if (!a->root.empty() && a->labels.size() > 1)
+          throw std::runtime_error("--root applies to one labels file only");
         if (!a->cache.empty()) fs::create_directories(a->cache);
-        std::vector<argtool::Model> models(set.models.size());
-        argtool::run_with_progress("build", models.size(), a->threads, [&](std::size_t i) {
-          argtool::prepare_model(models[i], (root / set.models[i].path).string(), a->options,
-                                 a->cache, true, false, false);
-        });
-        // Stratified folds: the k-th model of each class goes to fold k mod folds.
-        std::vector<int> fold(models.size()), seen(set.classes.size(), 0);
-        for (std::size_t i = 0; i < models.size(); ++i)
-          fold[i] = seen[std::size_t(set.class_of[i])]++ % a->folds;
+        std::vector<Set> sets(a->labels.size());
+        for (std::size_t k = 0; k < sets.size(); ++k) {
+          Set& s = sets[k];
+          const fs::path p(a->labels[k]);
+          s.name = p.filename() == "labels.csv" ? p.parent_path().filename().string()
+                                                : p.stem().string();
+          s.labels = arg::parse_label_csv(argtool::read_file_bytes(a->labels[k]));
+          const fs::path root = a->root.empty() ? p.parent_path() : fs::path(a->root);
+          s.models.resize(s.labels.models.size());
+          argtool::run_with_progress(
+              "build " + s.name, s.models.size(), a->threads, [&](std::size_t i) {
+                argtool::prepare_model(s.models[i], (root / s.labels.models[i].path).string(),
+                                       a->options, a->cache, true);
+              });
+          const std::size_t n = s.models.size();
+          s.panorama.assign(n * n, 1.0), s.spectrum.assign(n * n, 1.0);
+          for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 0; j < n; ++j) {
+              const auto &x = s.models[i].graph, &y = s.models[j].graph;
+              if (i == j) {
+                s.panorama[i * n + j] = s.spectrum[i * n + j] = 0;
+              } else if (s.models[i].error.empty() && s.models[j].error.empty()) {
+                s.panorama[i * n + j] = arg::panorama_distance(x.panorama, y.panorama);
+                // As arg_similarity: no spectrum term when either model lacks one.
+                s.spectrum[i * n + j] = x.spectrum.empty() || y.spectrum.empty()
+                                            ? -1.0
+                                            : arg::spectrum_distance(x.spectrum, y.spectrum);
+              }
+            }
+        }
+        GraphCache graphs(sets, a->threads);
         const arg::Weights start = arg::parse_weights(a->start);
         auto say = [](const std::string& line) { std::fprintf(stderr, "  %s\n", line.c_str()); };
-        double held_out_sum = 0, baseline_sum = 0;
-        for (int f = 0; f < a->folds; ++f) {
-          std::vector<int> train, test;
-          for (std::size_t i = 0; i < models.size(); ++i)
-            (fold[i] == f ? test : train).push_back(int(i));
-          std::fprintf(stderr, "fold %d: training on %zu models\n", f + 1, train.size());
-          arg::Weights learnt = arg::search_weights(
-              start,
-              [&](const arg::Weights& w) {
-                return scores_within(models, set, train, w, a->threads).map;
-              },
-              a->rounds, 1e-4, say);
-          const double held = scores_within(models, set, test, learnt, a->threads).map;
-          const double base = scores_within(models, set, test, start, a->threads).map;
-          held_out_sum += held, baseline_sum += base;
-          std::printf("fold %d: held-out mAP %.4f (start weights %.4f) with %s\n", f + 1, held,
-                      base, arg::format_weights(learnt).c_str());
+        auto search = [&](const std::function<double(const arg::Weights&)>& objective) {
+          return a->mixing_only ? arg::grid_search_mixing(start, objective)
+                                : arg::search_weights(start, objective, a->rounds, 1e-4, say);
+        };
+        std::vector<std::string> report;
+
+        if (sets.size() == 1) {
+          // Stratified folds: the k-th model of each class goes to fold k mod folds.
+          const Set& s = sets[0];
+          std::vector<int> fold(s.models.size()), seen(s.labels.classes.size(), 0);
+          for (std::size_t i = 0; i < s.models.size(); ++i)
+            fold[i] = seen[std::size_t(s.labels.class_of[i])]++ % a->folds;
+          double held_sum = 0, base_sum = 0;
+          for (int f = 0; f < a->folds; ++f) {
+            std::vector<int> train, test;
+            for (std::size_t i = 0; i < s.models.size(); ++i)
+              (fold[i] == f ? test : train).push_back(int(i));
+            std::fprintf(stderr, "fold %d: training on %zu models\n", f + 1, train.size());
+            const arg::Weights learnt = search([&](const arg::Weights& w) {
+              return objective_of(scores_within(s, train, w, graphs, 0), a->objective);
+            });
+            const double held = scores_within(s, test, learnt, graphs, 0).map;
+            const double base = scores_within(s, test, start, graphs, 0).map;
+            held_sum += held, base_sum += base;
+            std::printf("fold %d: held-out mAP %.4f (start weights %.4f) with %s\n", f + 1, held,
+                        base, arg::format_weights(learnt).c_str());
+          }
+          std::printf("cross-validated mAP %.4f (start weights %.4f) over %d folds\n",
+                      held_sum / a->folds, base_sum / a->folds, a->folds);
+        } else {
+          // Leave one set out: learn on the others (each weighs the same), score on it.
+          for (std::size_t out = 0; out < sets.size(); ++out) {
+            std::fprintf(stderr, "held out: %s\n", sets[out].name.c_str());
+            const arg::Weights learnt = search([&](const arg::Weights& w) {
+              double sum = 0;
+              for (std::size_t k = 0; k < sets.size(); ++k)
+                if (k != out)
+                  sum += objective_of(scores_within(sets[k], everyone(sets[k]), w, graphs, k),
+                                      a->objective);
+              return sum / double(sets.size() - 1);
+            });
+            const auto held = scores_within(sets[out], everyone(sets[out]), learnt, graphs, out);
+            const auto base = scores_within(sets[out], everyone(sets[out]), start, graphs, out);
+            report.push_back(row("held out, learnt weights", sets[out].name, held));
+            report.push_back(row("held out, start weights", sets[out].name, base));
+            report.push_back("  learnt on the other sets: " + arg::format_weights(learnt));
+            std::printf("%s\n%s\n%s\n", report[report.size() - 3].c_str(),
+                        report[report.size() - 2].c_str(), report.back().c_str());
+            std::fflush(stdout);
+          }
         }
-        std::printf("cross-validated mAP %.4f (start weights %.4f) over %d folds\n",
-                    held_out_sum / a->folds, baseline_sum / a->folds, a->folds);
-        std::vector<int> all(models.size());
-        for (std::size_t i = 0; i < all.size(); ++i) all[i] = int(i);
-        std::fprintf(stderr, "final: training on all %zu models\n", all.size());
-        arg::Weights final_weights = arg::search_weights(
-            start,
-            [&](const arg::Weights& w) {
-              return scores_within(models, set, all, w, a->threads).map;
-            },
-            a->rounds, 1e-4, say);
+        std::fprintf(stderr, "final: training on every model of every set\n");
+        const arg::Weights final_weights = search([&](const arg::Weights& w) {
+          double sum = 0;
+          for (std::size_t k = 0; k < sets.size(); ++k)
+            sum +=
+                objective_of(scores_within(sets[k], everyone(sets[k]), w, graphs, k), a->objective);
+          return sum / double(sets.size());
+        });
+        for (std::size_t k = 0; k < sets.size(); ++k)
+          std::printf("%s\n",
+                      row("training (all sets)", sets[k].name,
+                          scores_within(sets[k], everyone(sets[k]), final_weights, graphs, k))
+                          .c_str());
         std::printf(
-            "learnt weights (all models; use the cross-validated mAP above as their honest "
-            "score):\n%s\n",
+            "learnt weights (all models; their scores above are training scores, the held-out "
+            "ones are the honest figures):\n%s\n",
             arg::format_weights(final_weights).c_str());
         return 0;
       };

@@ -5,12 +5,12 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "build/build_arg.hpp"
 #include "command_registry.hpp"
 #include "common/hash.hpp"
 #include "eval/baseline_descriptors.hpp"
 #include "graph/serialize.hpp"
 #include "io/read_mesh.hpp"
+#include "pipeline/build_arg.hpp"
 
 namespace fs = std::filesystem;
 
@@ -38,7 +38,8 @@ std::string cache_path(const std::string& dir, const std::string& mesh,
 }  // namespace
 
 void prepare_model(Model& m, const std::string& path, const arg::BuildOptions& options,
-                   const std::string& cache_dir, bool need_arg, bool need_d2, bool need_cords) {
+                   const std::string& cache_dir, bool need_arg,
+                   const std::vector<std::string>& descriptors) {
   try {
     std::string bytes = argtool::read_file_bytes(path);
     if (need_arg) {
@@ -54,15 +55,15 @@ void prepare_model(Model& m, const std::string& path, const arg::BuildOptions& o
       }
       m.graph = arg::deserialize_arg(arg_bytes);
     }
-    if (need_d2 || need_cords) {
-      arg::Mesh mesh = arg::read_mesh(bytes);
-      auto t0 = std::chrono::steady_clock::now();
-      if (need_d2)
-        m.d2 = arg::baseline_descriptor(mesh, arg::BaselineKind::D2), m.d2_ms = ms_since(t0);
-      t0 = std::chrono::steady_clock::now();
-      if (need_cords)
-        m.cords = arg::baseline_descriptor(mesh, arg::BaselineKind::Cords),
-        m.cords_ms = ms_since(t0);
+    if (!descriptors.empty()) {
+      const arg::Mesh posed = arg::posed_for_descriptors(arg::read_mesh(bytes));
+      for (const std::string& name : descriptors) {
+        const arg::DescriptorMethod* method = arg::find_descriptor_method(name);
+        if (!method) throw std::runtime_error("no descriptor method " + name);
+        auto t0 = std::chrono::steady_clock::now();
+        m.descriptor[name] = method->compute(posed);
+        m.descriptor_ms[name] = ms_since(t0);
+      }
     }
   } catch (const std::exception& e) {
     m.error = e.what();

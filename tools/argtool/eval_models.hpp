@@ -1,11 +1,12 @@
-// Loading the models of a labelled set for eval and tune: ARGs (cached) and baseline histograms.
+// Loading the models of a labelled set for eval and tune: ARGs (cached) and descriptor vectors.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
-#include "build/build_options.hpp"
 #include "graph/arg_graph.hpp"
+#include "pipeline/build_options.hpp"
 
 namespace argtool {
 
@@ -13,14 +14,17 @@ namespace argtool {
 struct Model {
   std::string error;  // why the model could not be used (it then counts as a miss)
   arg::ArgGraph graph;
-  std::vector<float> d2, cords;
-  double build_ms = 0, d2_ms = 0, cords_ms = 0;  // 0 when the ARG came from the cache
+  double build_ms = 0;                                   // 0 when the ARG came from the cache
+  std::map<std::string, std::vector<float>> descriptor;  // by descriptor method name
+  std::map<std::string, double> descriptor_ms;
 };
 
-// Reads the mesh at `path` and fills what the methods need. Built ARGs are cached in
-// `cache_dir` (when not empty) under a key of the mesh bytes, options and builder version.
-// Never throws: failures land in Model::error.
+// Reads the mesh at `path` and fills what the methods need: the ARG when `need_arg`, and
+// each descriptor method named in `descriptors`. Built ARGs are cached in `cache_dir` (when
+// not empty) under a key of the mesh bytes, options and builder version. Never throws:
+// failures land in Model::error.
 void prepare_model(Model& model, const std::string& path, const arg::BuildOptions& options,
-                   const std::string& cache_dir, bool need_arg, bool need_d2, bool need_cords);
+                   const std::string& cache_dir, bool need_arg,
+                   const std::vector<std::string>& descriptors = {});
 
 }  // namespace argtool

@@ -4,8 +4,8 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "build/build_arg.hpp"
 #include "graph/arg_graph.hpp"
+#include "pipeline/build_arg.hpp"
 
 namespace argtool {
 

@@ -4,11 +4,11 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "build/build_arg.hpp"
 #include "command_registry.hpp"
 #include "common/errors.hpp"
 #include "graph/serialize.hpp"
 #include "io/read_mesh.hpp"
+#include "pipeline/build_arg.hpp"
 
 namespace argtool {
 

@@ -3,10 +3,10 @@
 
 #include <string>
 
-#include "build/build_options.hpp"
-#include "build/node_positions.hpp"
 #include "graph/arg_graph.hpp"
 #include "mesh/mesh.hpp"
+#include "pipeline/build_options.hpp"
+#include "pipeline/node_positions.hpp"
 
 namespace argtool {
 

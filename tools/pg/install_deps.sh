@@ -10,6 +10,10 @@ packages=(
   # core libraries (zlib checks PNG chunk checksums; tinygltf's header needs nlohmann-json and stb, which its package does not pull in)
   libeigen3-dev libopenmesh-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libopenimageio-dev
   libcli11-dev zlib1g-dev
+  # OpenVDB (distance fields of the watertight proxy); its headers also need Boost's and TBB's
+  libopenvdb-dev libboost-dev libtbb-dev
+  # Spectra (header-only eigen-solver of the Laplace-Beltrami spectrum)
+  libspectra-dev
   # build and test tools
   cmake g++ make clang-format libgtest-dev libbenchmark-dev
   # libFuzzer targets and the sanitizer runtimes (tests/fuzz)

@@ -1,5 +1,5 @@
 // Parsing and printing the options of an ARG build.
-#include "build/build_options.hpp"
+#include "pipeline/build_options.hpp"
 
 #include "common/errors.hpp"
 #include "common/key_values.hpp"
@@ -16,6 +16,18 @@ const char* mu_kind_name(MuKind kind) {
       return "centroid";
   }
   return "geodesic";
+}
+
+const char* surface_kind_name(SurfaceKind kind) {
+  switch (kind) {
+    case SurfaceKind::Auto:
+      return "auto";
+    case SurfaceKind::Mesh:
+      return "mesh";
+    case SurfaceKind::Proxy:
+      return "proxy";
+  }
+  return "auto";
 }
 
 BuildOptions parse_build_options(std::string_view text) {
@@ -35,11 +47,23 @@ BuildOptions parse_build_options(std::string_view text) {
         throw InputError("build options: mu=" + value + " (expected geodesic, height or centroid)");
     } else if (key == "base_points") {
       options.base_points = int(parse_integer(value, key, what, 8, 4096));
+    } else if (key == "surface") {
+      if (value == "auto")
+        options.surface = SurfaceKind::Auto;
+      else if (value == "mesh")
+        options.surface = SurfaceKind::Mesh;
+      else if (value == "proxy")
+        options.surface = SurfaceKind::Proxy;
+      else
+        throw InputError("build options: surface=" + value + " (expected auto, mesh or proxy)");
+    } else if (key == "proxy_resolution") {
+      options.proxy_resolution = int(parse_integer(value, key, what, 16, 256));
     } else if (key == "threads") {
       options.threads = int(parse_integer(value, key, what, 1, 256));
     } else {
-      throw InputError("build options: unknown key \"" + key +
-                       "\" (expected levels, mu, base_points or threads)");
+      throw InputError(
+          "build options: unknown key \"" + key +
+          "\" (expected levels, mu, base_points, surface, proxy_resolution or threads)");
     }
   }
   return options;
@@ -47,7 +71,9 @@ BuildOptions parse_build_options(std::string_view text) {
 
 std::string format_build_options(const BuildOptions& options) {
   return "levels=" + std::to_string(options.levels) + " mu=" + mu_kind_name(options.mu) +
-         " base_points=" + std::to_string(options.base_points);
+         " base_points=" + std::to_string(options.base_points) +
+         " surface=" + surface_kind_name(options.surface) +
+         " proxy_resolution=" + std::to_string(options.proxy_resolution);
 }
 
 }  // namespace arg

@@ -1,19 +1,19 @@
 // The ARG pipeline: clean, normalise, mu, slice, Reeb levels, attributes, assemble.
-#include "build/build_arg.hpp"
+#include "pipeline/build_arg.hpp"
 
 #include <algorithm>
 #include <chrono>
 
 #include "common/errors.hpp"
 #include "features/curvature.hpp"
+#include "features/laplace_spectrum.hpp"
 #include "features/node_attributes.hpp"
+#include "features/panorama_descriptor.hpp"
 #include "features/shape_distributions.hpp"
 #include "graph/serialize.hpp"
-#include "mesh/clean_mesh.hpp"
-#include "mesh/connected_components.hpp"
 #include "mesh/mesh_edges.hpp"
-#include "mesh/normalize_pose.hpp"
 #include "mu/mu_function.hpp"
+#include "pipeline/prepare_surface.hpp"
 #include "reeb/reeb_levels.hpp"
 #include "reeb/slice_intervals.hpp"
 
@@ -80,25 +80,23 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
     throw InputError("build options: levels must be in [1, " + std::to_string(kMaxLevels) + "]");
   Stopwatch clock;
 
-  CleanReport clean;
-  Mesh mesh = clean_mesh(input, &clean, stop);
+  const PreparedSurface prepared = prepare_surface(input, options, stop);
+  const CleanReport& clean = prepared.clean;
   rep.welded_vertices = clean.welded_vertices;
   rep.dropped_degenerate = clean.dropped_degenerate;
   rep.dropped_duplicate = clean.dropped_duplicate;
   rep.flipped_faces = clean.flipped_faces;
   rep.boundary_edges = clean.boundary_edges;
   rep.nonmanifold_edges = clean.nonmanifold_edges;
+  rep.components = prepared.components;
+  rep.proxy = prepared.proxy.has_value();
   rep.ms.clean = clock.lap();
-
-  Pose pose = surface_pose(mesh);
-  if (!(pose.area > 0)) throw InputError("mesh has zero surface area");
-  mesh = apply_pose(mesh, pose);
-  MeshEdges edges = mesh_edges(mesh.F);
-  std::vector<int> component;
-  rep.components = std::size_t(vertex_components(mesh, component));
+  const Mesh& mesh = prepared.surface();
+  const MeshEdges proxy_edges = prepared.proxy ? mesh_edges(mesh.F) : MeshEdges{};
+  const MeshEdges& edges = prepared.proxy ? proxy_edges : prepared.posed_edges;
   rep.ms.normalise = clock.lap();
 
-  std::vector<double> mu = normalised_mu(mesh, edges, options, stop);
+  const std::vector<double> mu = normalised_mu(mesh, edges, options, stop);
   rep.ms.mu = clock.lap();
 
   SlicedSurface sliced = slice_intervals(mesh, mu, 1 << options.levels, stop);
@@ -116,13 +114,16 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
   g.options.threads = 1;
   g.builder_version = current_builder_version();
   assemble(g, per_level, reeb);
+  const Pose& pose = prepared.pose;
   ArgSummary& s = g.summary;
-  s.triangles = std::uint32_t(mesh.F.rows());
-  s.vertices = std::uint32_t(mesh.V.rows());
+  s.triangles = std::uint32_t(prepared.posed.F.rows());  // of the cleaned input, not the proxy
+  s.vertices = std::uint32_t(prepared.posed.V.rows());
   s.components = std::uint16_t(std::min<std::size_t>(rep.components, 65535));
   s.genus = std::uint16_t(std::clamp(reeb.loops, 0, 65535));
   s.has_colour = mesh.has_colour() ? 1 : 0;
-  s.flags = clean.boundary_edges > 0 ? 1 : 0;
+  s.flags =
+      std::uint16_t((clean.boundary_edges > 0 ? kFlagOpen : 0) | (rep.proxy ? kFlagProxy : 0) |
+                    (prepared.wide_open() ? kFlagWideOpen : 0));
   s.area = float(pose.area);
   s.scale = float(pose.scale);
   s.volume = float(volume / (pose.scale * pose.scale * pose.scale));
@@ -132,6 +133,12 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
   counts.loops = reeb.loops;
   counts.components = int(rep.components);
   g.global = global_descriptor(mesh, pose, counts, volume);
+  // The spectrum only counts between models whose surface is the shape's own (similarity.cpp).
+  if (!(s.flags & (kFlagProxy | kFlagWideOpen)))
+    g.spectrum = laplace_spectrum(mesh, kSpectrumSize, stop);
+  check_interrupt(stop);
+  // The views see the model as it was given (a soup's parts as they are), not its proxy.
+  g.panorama = panorama_descriptor(prepared.posed);
   rep.ms.features = clock.lap();
   return g;
 }

@@ -1,13 +1,12 @@
 // Barycentres of Reeb graph nodes from the pieces of the sliced surface, level by level.
-#include "build/node_positions.hpp"
+#include "pipeline/node_positions.hpp"
 
 #include <algorithm>
 
 #include "common/errors.hpp"
-#include "mesh/clean_mesh.hpp"
 #include "mesh/mesh_edges.hpp"
-#include "mesh/normalize_pose.hpp"
 #include "mu/mu_function.hpp"
+#include "pipeline/prepare_surface.hpp"
 #include "reeb/reeb_levels.hpp"
 #include "reeb/slice_intervals.hpp"
 
@@ -18,10 +17,8 @@ NodePositions node_positions(const Mesh& input, const BuildOptions& options,
   if (options.levels < 1 || options.levels > kMaxLevels)
     throw InputError("build options: levels must be in [1, " + std::to_string(kMaxLevels) + "]");
   NodePositions out;
-  Mesh mesh = clean_mesh(input, nullptr, stop);
-  const Pose pose = surface_pose(mesh);
-  if (!(pose.area > 0)) throw InputError("mesh has zero surface area");
-  out.mesh = apply_pose(mesh, pose);
+  PreparedSurface prepared = prepare_surface(input, options, stop);
+  out.mesh = prepared.proxy ? std::move(*prepared.proxy) : std::move(prepared.posed);
   const MeshEdges edges = mesh_edges(out.mesh.F);
   out.mu = normalised_mu(out.mesh, edges, options, stop);
   const SlicedSurface sliced = slice_intervals(out.mesh, out.mu, 1 << options.levels, stop);

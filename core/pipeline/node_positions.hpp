@@ -5,9 +5,9 @@
 #include <utility>
 #include <vector>
 
-#include "build/build_options.hpp"
 #include "common/limits.hpp"
 #include "mesh/mesh.hpp"
+#include "pipeline/build_options.hpp"
 
 namespace arg {
 
@@ -22,7 +22,8 @@ struct NodePlacementLevel {
 };
 
 struct NodePositions {
-  // The cleaned, pose-normalised mesh: the frame in which the ARG measures its barycentres
+  // The surface the graph was built on (the cleaned, pose-normalised mesh, or its watertight
+  // proxy when the build used one), in the frame in which the ARG measures its barycentres
   // (centre of mass at the origin, principal axes on x, y, z, unit RMS radius).
   Mesh mesh;
   std::vector<double> mu;                  // mu_N in [0, 1] per vertex of `mesh`

@@ -1,9 +1,9 @@
-// Removing the slivers marching leaves behind by collapsing short edges, topology kept.
+// Collapsing short edges, topology kept: slivers of marching, coarser copies for the spectrum.
 #pragma once
 
 #include "mesh/mesh.hpp"
 
-namespace arg::gen {
+namespace arg {
 
 struct CollapseOptions {
   double min_length = 0;   // shorter edges are collapsed wherever allowed
@@ -14,8 +14,8 @@ struct CollapseOptions {
 // Collapses short edges (shortest first, ties by vertex index, so the result is deterministic)
 // into their midpoints. An edge is only collapsed when the link condition holds, which keeps a
 // closed manifold closed, manifold and of the same genus, and when no surrounding triangle
-// would flip, turn by more than 60 degrees or lose its area. Expects a closed manifold mesh;
-// colours are not carried (call before painting).
+// would flip, turn by more than 60 degrees or lose its area. Only edges between two triangles
+// collapse, so a boundary stays where it is; colours are not carried (call before painting).
 Mesh collapse_short_edges(const Mesh& mesh, const CollapseOptions& options);
 
-}  // namespace arg::gen
+}  // namespace arg

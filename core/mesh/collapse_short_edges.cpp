@@ -1,7 +1,7 @@
-// Removing the slivers marching leaves behind by collapsing short edges, topology kept.
+// Collapsing short edges, topology kept: slivers of marching, coarser copies for the spectrum.
 #include "gen/strict_fp.hpp"  // first: it sets how arithmetic is compiled
 
-#include "gen/collapse_short_edges.hpp"
+#include "mesh/collapse_short_edges.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,8 +10,10 @@
 
 #include "gen/vec3.hpp"
 
-namespace arg::gen {
+namespace arg {
 namespace {
+
+using gen::Vec3;
 
 struct Work {
   std::vector<Vec3> V;
@@ -204,4 +206,4 @@ Mesh collapse_short_edges(const Mesh& mesh, const CollapseOptions& options) {
   return out;
 }
 
-}  // namespace arg::gen
+}  // namespace arg

@@ -4,11 +4,11 @@
 #include <string>
 #include <string_view>
 
-#include "build/build_options.hpp"
 #include "common/limits.hpp"
 #include "graph/arg_graph.hpp"
 #include "io/read_mesh.hpp"
 #include "mesh/mesh.hpp"
+#include "pipeline/build_options.hpp"
 
 namespace arg {
 
@@ -26,6 +26,7 @@ struct BuildReport {
   std::size_t boundary_edges = 0;
   std::size_t nonmanifold_edges = 0;
   std::size_t components = 0;
+  bool proxy = false;  // mu and the graph were computed on the watertight proxy
   BuildTimings ms;
 };
 

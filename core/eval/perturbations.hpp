@@ -1,0 +1,38 @@
+// Seeded transformations of a mesh for the robustness benchmark (after SHREC 2010's protocol).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+
+namespace arg {
+
+// What a scan or an export does to a model, each at strengths 1 (mild) to 5 (harsh). D is the
+// diagonal of the model's bounding box; areas are shares of the model's surface.
+enum class Perturbation {
+  SmallHoles,  // 4 s holes of radius 0.02 D
+  LargeHoles,  // s holes of radius 0.06 D
+  Noise,       // Gaussian offset of every vertex, sigma 0.001 s D per axis
+  ShotNoise,   // 0.2 s % of the vertices pushed 0.02 D along their normal, either way
+  Decimate,    // vertex clustering down to 50 - 7.5 (s - 1) % of the vertices (50% .. 20%)
+  Remesh,      // midpoint subdivision, then clustering on a shifted grid to (0.75 + 0.25 s) x
+               // the vertices: the same surface with another triangulation
+  Split,       // s random planes through the middle cut the surface into separate parts
+  Partial,     // the part of the surface nearest a random point, 5 s % of the area, removed
+  Scale,       // the whole model scaled by 2^s
+  LocalScale,  // a ball of radius 0.2 D about a surface point grown by up to 15 s %
+};
+
+const std::vector<Perturbation>& all_perturbations();
+const char* perturbation_name(Perturbation kind);  // "small_holes", "noise", ...
+std::optional<Perturbation> parse_perturbation(std::string_view name);
+
+// Applies `kind` at `strength` (1..5). The same mesh, kind, strength and seed give the same
+// mesh, bit for bit. Colours follow their faces. Throws InputError for a strength outside 1..5
+// or a mesh without faces, and when nothing would be left.
+Mesh perturb(const Mesh& mesh, Perturbation kind, int strength, std::uint64_t seed);
+
+}  // namespace arg

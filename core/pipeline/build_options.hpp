@@ -1,0 +1,39 @@
+// Options of an ARG build (resolution, kind of mu, sampling) and their short text form.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace arg {
+
+enum class MuKind : std::uint8_t { Geodesic = 0, Height = 1, Centroid = 2 };
+
+// Which surface mu and the Reeb graph are computed on: the cleaned mesh itself, or a closed
+// manifold proxy of it (mesh/watertight_proxy.hpp); auto takes the proxy when the mesh is in
+// pieces (its second largest component holds 1% of the area or more) or has non-manifold
+// edges (more than 0.1% of its edges), not for holes alone.
+enum class SurfaceKind : std::uint8_t { Auto = 0, Mesh = 1, Proxy = 2 };
+
+struct BuildOptions {
+  int levels = 5;  // n: the finest level has 2^n intervals of mu; levels 0..n are kept
+  MuKind mu = MuKind::Geodesic;
+  int base_points = 128;  // K, base points of the geodesic integral
+  SurfaceKind surface = SurfaceKind::Auto;
+  int proxy_resolution = 48;  // grid cells along the longest side of the proxy's grid
+  int threads = 1;            // worker threads for mu; never changes the result
+};
+
+inline constexpr int kMaxLevels = 7;
+
+// Parses "levels=5 mu=geodesic base_points=128 surface=auto proxy_resolution=48 threads=2" (any
+// order, any subset; empty gives the defaults). Throws InputError naming the bad key or value.
+BuildOptions parse_build_options(std::string_view text);
+
+// The canonical text form of the options that change the result (threads is left out).
+std::string format_build_options(const BuildOptions& options);
+
+const char* mu_kind_name(MuKind kind);
+const char* surface_kind_name(SurfaceKind kind);
+
+}  // namespace arg

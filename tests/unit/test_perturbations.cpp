@@ -1,0 +1,98 @@
+// The robustness benchmark's transformations: deterministic, and each does what it says.
+#include <gtest/gtest.h>
+
+#include "common/errors.hpp"
+#include "eval/perturbations.hpp"
+#include "io/write_mesh.hpp"
+#include "mesh/clean_mesh.hpp"
+#include "mesh/connected_components.hpp"
+#include "test_shapes.hpp"
+
+namespace arg {
+namespace {
+
+double area(const Mesh& m) {
+  double a = 0;
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    a += 0.5 * (m.V.row(m.F(f, 1)) - m.V.row(m.F(f, 0)))
+                   .cross(m.V.row(m.F(f, 2)) - m.V.row(m.F(f, 0)))
+                   .norm();
+  return a;
+}
+
+const Mesh& model() {
+  static const Mesh m = test::capsule(2, 0.6, 60, 32);
+  return m;
+}
+
+TEST(Perturbations, TheSameSeedGivesTheSameBytesAndAnotherSeedOthers) {
+  for (Perturbation kind : all_perturbations())
+    for (int s : {1, 3, 5}) {
+      const std::string a = write_ply_binary(perturb(model(), kind, s, 7));
+      EXPECT_EQ(a, write_ply_binary(perturb(model(), kind, s, 7))) << perturbation_name(kind);
+      if (kind != Perturbation::Scale && kind != Perturbation::Decimate) {
+        EXPECT_NE(a, write_ply_binary(perturb(model(), kind, s, 8))) << perturbation_name(kind);
+      }
+    }
+}
+
+TEST(Perturbations, HolesAndPartialRemovalOpenTheSurface) {
+  for (Perturbation kind :
+       {Perturbation::SmallHoles, Perturbation::LargeHoles, Perturbation::Partial}) {
+    CleanReport report;
+    const Mesh out = clean_mesh(perturb(model(), kind, 3, 1), &report);
+    EXPECT_GT(report.boundary_edges, 0u) << perturbation_name(kind);
+    EXPECT_LT(area(out), area(model())) << perturbation_name(kind);
+  }
+  // Partial removal takes 5 s % of the area.
+  const double left = area(perturb(model(), Perturbation::Partial, 4, 1)) / area(model());
+  EXPECT_NEAR(left, 0.8, 0.02);
+}
+
+TEST(Perturbations, SplittingMakesSeparateComponents) {
+  std::vector<int> component;
+  const Mesh out = perturb(model(), Perturbation::Split, 3, 1);
+  EXPECT_GE(vertex_components(out, component), 3);
+  EXPECT_NEAR(area(out), area(model()), 1e-9 * area(model()));  // nothing removed
+}
+
+TEST(Perturbations, DecimationAndRemeshingKeepTheirVertexBudgets) {
+  const double n = double(model().V.rows());
+  for (int s = 1; s <= 5; ++s) {
+    const double kept = double(perturb(model(), Perturbation::Decimate, s, 1).V.rows()) / n;
+    EXPECT_LE(kept, 0.5 - 0.075 * (s - 1) + 1e-9);
+    EXPECT_GT(kept, 0.5 * (0.5 - 0.075 * (s - 1)));
+    const double remeshed = double(perturb(model(), Perturbation::Remesh, s, 1).V.rows()) / n;
+    EXPECT_LE(remeshed, 0.75 + 0.25 * s + 1e-9);
+    EXPECT_GT(remeshed, 0.5 * (0.75 + 0.25 * s));
+  }
+  // The surface stays about where it was.
+  EXPECT_NEAR(area(perturb(model(), Perturbation::Remesh, 3, 1)), area(model()),
+              0.1 * area(model()));
+}
+
+TEST(Perturbations, NoiseAndScaleMoveVerticesByTheRightAmount) {
+  const Mesh noisy = perturb(model(), Perturbation::Noise, 2, 1);
+  ASSERT_EQ(noisy.V.rows(), model().V.rows());
+  const double d = (model().V.colwise().maxCoeff() - model().V.colwise().minCoeff()).norm();
+  const double rms = std::sqrt((noisy.V - model().V).squaredNorm() / double(3 * noisy.V.rows()));
+  EXPECT_NEAR(rms, 0.002 * d, 0.0004 * d);
+  const Mesh big = perturb(model(), Perturbation::Scale, 3, 1);
+  EXPECT_TRUE(big.V.isApprox(8.0 * model().V));
+  const Mesh shot = perturb(model(), Perturbation::ShotNoise, 5, 1);
+  int moved = 0;
+  for (Eigen::Index v = 0; v < shot.V.rows(); ++v) moved += shot.V.row(v) != model().V.row(v);
+  EXPECT_GE(moved, 1);
+  EXPECT_LE(moved, int(0.01 * double(shot.V.rows())) + 1);
+}
+
+TEST(Perturbations, NamesRoundTripAndBadStrengthsAreRefused) {
+  for (Perturbation kind : all_perturbations())
+    EXPECT_EQ(parse_perturbation(perturbation_name(kind)), kind);
+  EXPECT_FALSE(parse_perturbation("melt").has_value());
+  EXPECT_THROW(perturb(model(), Perturbation::Noise, 0, 1), InputError);
+  EXPECT_THROW(perturb(model(), Perturbation::Noise, 6, 1), InputError);
+}
+
+}  // namespace
+}  // namespace arg
