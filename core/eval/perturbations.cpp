@@ -10,6 +10,7 @@
 #include "common/errors.hpp"
 #include "common/random.hpp"
 #include "gen/seeded_random.hpp"
+#include "mesh/collapse_short_edges.hpp"
 
 namespace arg {
 
@@ -162,6 +163,27 @@ Mesh cluster(const Mesh& m, double cell, const Eigen::RowVector3d& shift) {
   return keep_faces(out, [](Eigen::Index) { return true; });
 }
 
+// Edge collapse (topology kept, mesh/collapse_short_edges.hpp) with the shortest length that
+// leaves at most `target` vertices (bisection on the length), as decimation tools do.
+Mesh collapse_to(const Mesh& m, double target) {
+  double lo = 0, hi = diagonal(m);
+  Mesh best;
+  for (int step = 0; step < 20; ++step) {
+    CollapseOptions o;
+    o.min_length = 0.5 * (lo + hi);
+    Mesh trial = collapse_short_edges(m, o);
+    if (double(trial.V.rows()) > target) {
+      lo = o.min_length;
+    } else {
+      hi = o.min_length;
+      best = std::move(trial);
+    }
+  }
+  if (best.F.rows() == 0) throw InputError("perturb: nothing of the mesh would be left");
+  if (m.has_colour()) best.C.resize(0, 3);  // collapses do not carry colour
+  return best;
+}
+
 // Clustering with the cell size that leaves about `target` vertices (bisection on the size).
 Mesh cluster_to(const Mesh& m, double target, const Eigen::RowVector3d& shift) {
   double lo = 0, hi = diagonal(m);
@@ -215,6 +237,18 @@ Eigen::RowVector3d random_direction(SeededRandom& rng) {
     const double n = d.norm();
     if (n > 1e-3 && n <= 1.0) return d / n;
   }
+}
+
+// Moves every vertex by up to 1% of the mean edge length (a random offset), so that a
+// remeshing does not merely undo its own subdivision.
+Mesh jitter(const Mesh& m, SeededRandom& rng) {
+  double sum = 0;
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    for (int c = 0; c < 3; ++c) sum += (m.V.row(m.F(f, c)) - m.V.row(m.F(f, (c + 1) % 3))).norm();
+  const double step = 0.01 * sum / double(std::max<Eigen::Index>(1, 3 * m.F.rows()));
+  Mesh out = m;
+  for (Eigen::Index v = 0; v < out.V.rows(); ++v) out.V.row(v) += step * random_direction(rng);
+  return out;
 }
 
 // Cuts along random planes through points near the centre: every face goes to the side of
@@ -339,11 +373,12 @@ Mesh perturb(const Mesh& mesh, Perturbation kind, int s, std::uint64_t seed) {
       return out;
     }
     case Perturbation::Decimate:
-      return cluster_to(mesh, (0.5 - 0.075 * (s - 1)) * double(mesh.V.rows()),
-                        Eigen::RowVector3d(0.5, 0.5, 0.5));
-    case Perturbation::Remesh: {
+      return collapse_to(mesh, (0.5 - 0.075 * (s - 1)) * double(mesh.V.rows()));
+    case Perturbation::Remesh:
+      return collapse_to(subdivide(jitter(mesh, rng)), (0.75 + 0.25 * s) * double(mesh.V.rows()));
+    case Perturbation::Cluster: {
       const Eigen::RowVector3d shift(rng.unit(), rng.unit(), rng.unit());
-      return cluster_to(subdivide(mesh), (0.75 + 0.25 * s) * double(mesh.V.rows()), shift);
+      return cluster_to(mesh, (0.5 - 0.075 * (s - 1)) * double(mesh.V.rows()), shift);
     }
     case Perturbation::Split:
       return split(mesh, s, rng);

@@ -17,13 +17,15 @@ enum class Perturbation {
   LargeHoles,  // s holes of radius 0.06 D
   Noise,       // Gaussian offset of every vertex, sigma 0.001 s D per axis
   ShotNoise,   // 0.2 s % of the vertices pushed 0.02 D along their normal, either way
-  Decimate,    // vertex clustering down to 50 - 7.5 (s - 1) % of the vertices (50% .. 20%)
-  Remesh,      // midpoint subdivision, then clustering on a shifted grid to (0.75 + 0.25 s) x
-               // the vertices: the same surface with another triangulation
+  Decimate,    // edge collapse down to 50 - 7.5 (s - 1) % of the vertices (50% .. 20%)
+  Remesh,      // midpoint subdivision, then edge collapse to (0.75 + 0.25 s) x the vertices:
+               // the same surface with another triangulation
   Split,       // s random planes through the middle cut the surface into separate parts
   Partial,     // the part of the surface nearest a random point, 5 s % of the area, removed
   Scale,       // the whole model scaled by 2^s
   LocalScale,  // a ball of radius 0.2 D about a surface point grown by up to 15 s %
+  Cluster,     // vertex clustering (Rossignac and Borrel) on a shifted grid down to the vertex
+               // count of Decimate: what a crude exporter does, non-manifold bits and slivers
 };
 
 const std::vector<Perturbation>& all_perturbations();

@@ -39,9 +39,8 @@ struct ArgNode {
 
 // Whole-model facts kept in the header.
 // Summary flags. Open: the mesh had boundary edges. Proxy: mu and the graph were computed on
-// its watertight proxy. Wide open: its boundary is longer than the square root of its area (a
-// sheet, or openings far larger than a scan's holes), so its geodesics are not the closed
-// shape's.
+// its watertight proxy. Wide open: its boundary is longer than 4 sqrt(area) (a sheet, or
+// openings far larger than a scan's holes), so its spectrum is not the closed shape's.
 inline constexpr std::uint16_t kFlagOpen = 1, kFlagProxy = 2, kFlagWideOpen = 4;
 
 struct ArgSummary {

@@ -12,6 +12,7 @@
 #include "features/shape_distributions.hpp"
 #include "graph/serialize.hpp"
 #include "mesh/mesh_edges.hpp"
+#include "mesh/taubin_smoothing.hpp"
 #include "mu/mu_function.hpp"
 #include "pipeline/prepare_surface.hpp"
 #include "reeb/reeb_levels.hpp"
@@ -20,6 +21,20 @@
 namespace arg {
 
 namespace {
+
+constexpr int kSmoothing = 10;  // Taubin iterations before curvature and the views
+
+// A copy smoothed against noise of the size of an edge, for a mesh whose edges are short
+// (mean under 2% of its bounding box's diagonal: scans and fine meshes). A coarse mesh's edges
+// are its shape, and smoothing would round a 12-triangle box into a blob, so it stays as it is.
+Mesh smoothed(const Mesh& mesh, const MeshEdges& edges) {
+  double sum = 0;
+  for (int e = 0; e < edges.count(); ++e)
+    sum += (mesh.V.row(edges.v0[e]) - mesh.V.row(edges.v1[e])).norm();
+  const double diagonal = (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).norm();
+  if (!(edges.count() > 0) || sum / edges.count() >= 0.02 * diagonal) return mesh;
+  return taubin_smoothing(mesh, edges, kSmoothing);
+}
 
 class Stopwatch {
  public:
@@ -103,7 +118,11 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
   ReebGraph reeb = reeb_levels(sliced, edges, options.levels, stop);
   rep.ms.reeb = clock.lap();
 
-  TriangleCurvature curvature = triangle_curvature(mesh, edges);
+  // Curvature of a smoothed copy: dihedral angles measure noise of the size of an edge as
+  // readily as shape, and a scan's noise would otherwise fill the curvature histograms. A
+  // proxy is a level set already smooth at its voxel size.
+  const TriangleCurvature curvature =
+      triangle_curvature(prepared.proxy ? mesh : smoothed(mesh, edges), edges);
   double volume = 0;
   std::vector<std::vector<ArgNode>> per_level =
       node_attributes(mesh, sliced, reeb, curvature, &volume);
@@ -137,7 +156,8 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
   if (!(s.flags & (kFlagProxy | kFlagWideOpen)))
     g.spectrum = laplace_spectrum(mesh, kSpectrumSize, stop);
   check_interrupt(stop);
-  // The views see the model as it was given (a soup's parts as they are), not its proxy.
+  // The views see the model as it was given (a soup's parts as they are), not its proxy, and
+  // not smoothed: smoothing them too made them steadier under noise but lost 0.02 NN on soups.
   g.panorama = panorama_descriptor(prepared.posed);
   rep.ms.features = clock.lap();
   return g;

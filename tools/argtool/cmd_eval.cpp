@@ -123,7 +123,6 @@ MethodResult run_method(const std::string& method, const std::vector<Model>& mod
   return r;
 }
 
-// "shrec07" for ../shared/data/shrec07/labels.csv; the file's stem for any other name.
 // Transformed copies (a --queries set) against the collection: q x n distances, scored.
 arg::RetrievalScores run_queries(const std::string& method, const std::vector<Model>& queries,
                                  const arg::LabelSet& query_set, const std::vector<Model>& models,
@@ -146,13 +145,6 @@ arg::RetrievalScores run_queries(const std::string& method, const std::vector<Mo
   for (std::size_t j = 0; j < n; ++j) valid[j] = models[j].error.empty();
   return arg::query_scores(distance, query_label, set.class_of, int(set.classes.size()),
                            query_valid, valid);
-}
-
-std::string set_name(const std::string& labels) {
-  const fs::path p(labels);
-  if (p.filename() == "labels.csv" && p.has_parent_path() && !p.parent_path().filename().empty())
-    return p.parent_path().filename().string();
-  return p.stem().string();
 }
 
 // FILE itself for one set and one method; FILE with ".SET.METHOD" before its extension else.
@@ -233,7 +225,7 @@ const bool registered = argtool::register_command(
         table.push_back(line);
         for (const std::string& labels : a->labels) {
           auto t0 = std::chrono::steady_clock::now();
-          const std::string name = set_name(labels);
+          const std::string name = argtool::set_name(labels);
           arg::LabelSet set = arg::parse_label_csv(argtool::read_file_bytes(labels));
           fs::path root = a->root.empty() ? fs::path(labels).parent_path() : fs::path(a->root);
           std::vector<Model> models =
@@ -287,7 +279,7 @@ const bool registered = argtool::register_command(
           for (const std::string& query_file : a->queries) {
             const arg::LabelSet query_set =
                 arg::parse_label_csv(argtool::read_file_bytes(query_file));
-            const std::string query_name = set_name(query_file);
+            const std::string query_name = argtool::set_name(query_file);
             const std::vector<Model> queries =
                 prepare_models(query_set, fs::path(query_file).parent_path(), "build " + query_name,
                                need_arg, descriptors, *a);
@@ -328,8 +320,8 @@ const bool registered = argtool::register_command(
         }
         if (!a->plot.empty())
           argtool::write_file_bytes(
-              a->plot,
-              arg::precision_recall_svg(plot, "Precision-recall: " + set_name(a->labels.front())));
+              a->plot, arg::precision_recall_svg(
+                           plot, "Precision-recall: " + argtool::set_name(a->labels.front())));
         return 0;
       };
     });

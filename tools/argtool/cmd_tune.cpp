@@ -163,8 +163,7 @@ const bool registered = argtool::register_command(
         for (std::size_t k = 0; k < sets.size(); ++k) {
           Set& s = sets[k];
           const fs::path p(a->labels[k]);
-          s.name = p.filename() == "labels.csv" ? p.parent_path().filename().string()
-                                                : p.stem().string();
+          s.name = argtool::set_name(a->labels[k]);
           s.labels = arg::parse_label_csv(argtool::read_file_bytes(a->labels[k]));
           const fs::path root = a->root.empty() ? p.parent_path() : fs::path(a->root);
           s.models.resize(s.labels.models.size());

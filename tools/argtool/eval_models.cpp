@@ -70,4 +70,11 @@ void prepare_model(Model& m, const std::string& path, const arg::BuildOptions& o
   }
 }
 
+std::string set_name(const std::string& labels) {
+  const fs::path p(labels);
+  if (p.filename() == "labels.csv" && p.has_parent_path() && !p.parent_path().filename().empty())
+    return p.parent_path().filename().string();
+  return p.stem().string();
+}
+
 }  // namespace argtool

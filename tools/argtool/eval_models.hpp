@@ -27,4 +27,8 @@ void prepare_model(Model& model, const std::string& path, const arg::BuildOption
                    const std::string& cache_dir, bool need_arg,
                    const std::vector<std::string>& descriptors = {});
 
+// A labelled set's name for tables: "shrec07" for ../shared/data/shrec07/labels.csv (the
+// folder of a labels.csv), the file's stem for any other name.
+std::string set_name(const std::string& labels_path);
+
 }  // namespace argtool
