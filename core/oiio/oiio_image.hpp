@@ -19,3 +19,5 @@ ARG_IMAGE_EXPORT Image oiio_decode_image(std::string_view bytes, const char* for
 
 // For dlopen: the address of oiio_decode_image (the extension looks this symbol up).
 extern "C" ARG_IMAGE_EXPORT void* arg_oiio_image_decoder();
+// For dlopen: the address of write_png (argtool looks this symbol up).
+extern "C" ARG_IMAGE_EXPORT void* arg_oiio_png_writer();

@@ -4,6 +4,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "common/errors.hpp"
+#include "oiio/oiio_image.hpp"
 
 namespace arg {
 
@@ -21,3 +22,7 @@ void write_png(const Image& image, const std::string& path) {
 }
 
 }  // namespace arg
+
+extern "C" ARG_IMAGE_EXPORT void* arg_oiio_png_writer() {
+  return reinterpret_cast<void*>(&arg::write_png);
+}

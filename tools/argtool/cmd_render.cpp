@@ -6,8 +6,8 @@
 
 #include "command_registry.hpp"
 #include "load_arg.hpp"
-#include "oiio/write_png.hpp"
 #include "pipeline/node_positions.hpp"
+#include "plugin_libraries.hpp"
 #include "render/graph_svg.hpp"
 #include "render/render_model.hpp"
 #include "render_input.hpp"
@@ -51,7 +51,7 @@ int run_render(const RenderArgs& a) {
                                    (nodes == 1 ? " node" : " nodes")
                              : a.title;
   const arg::RenderedModel picture = arg::render_model(model, ro);
-  arg::write_png(picture.image, a.output);
+  argtool::write_png(picture.image, a.output);
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   std::printf("wrote %s (%dx%d, level %d: %zu nodes drawn, %.0f ms)\n", a.output.c_str(),

@@ -12,7 +12,7 @@
 #include "load_arg.hpp"
 #include "match/similarity.hpp"
 #include "match/similarity_terms.hpp"
-#include "oiio/write_png.hpp"
+#include "plugin_libraries.hpp"
 #include "render/bitmap_font.hpp"
 #include "render/match_picture.hpp"
 #include "render/render_model.hpp"
@@ -118,7 +118,7 @@ int run_render_match(const RenderMatchArgs& a) {
       mo.notes.push_back(line);
 
   const arg::MatchPicture picture = arg::render_match_picture(x.positions, y.positions, pairs, mo);
-  arg::write_png(picture.image, a.output);
+  argtool::write_png(picture.image, a.output);
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   std::printf(

@@ -11,7 +11,7 @@
 #include "command_registry.hpp"
 #include "load_arg.hpp"
 #include "match/similarity.hpp"
-#include "oiio/write_png.hpp"
+#include "plugin_libraries.hpp"
 #include "render/contact_sheet.hpp"
 #include "render/render_model.hpp"
 #include "render_input.hpp"
@@ -116,7 +116,7 @@ int run_sheet(const SheetArgs& a) {
                             std::to_string(ranked.size()) + " by SIM (weights " + a.weights +
                             ", level " + std::to_string(a.level) + " graph shown)";
   const arg::Image sheet = arg::contact_sheet(cells, a.columns, title, a.thumb >= 256 ? 2 : 1);
-  arg::write_png(sheet, a.output);
+  argtool::write_png(sheet, a.output);
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   for (std::size_t k = 0; k < shown; ++k)

@@ -4,8 +4,10 @@
 
 #include "command_registry.hpp"
 #include "common/errors.hpp"
+#include "plugin_libraries.hpp"
 
 int main(int argc, char** argv) {
+  argtool::register_lazy_plugins();
   CLI::App app{"argtool: Augmented Reeb Graphs for 3D shape retrieval"};
   app.require_subcommand(1);
   std::map<std::string, std::function<int()>> runners;

@@ -12,7 +12,7 @@
 namespace argtool {
 
 // Runs `work(index)` for index in [0, count) on `threads` threads (each index once, any
-// order) while drawing "label  done/count [=====     ]" on stderr.
+// order) while drawing "label  done/count [=====     ]" on stderr (plain lines in a log).
 template <class Work>
 void run_with_progress(const std::string& label, std::size_t count, int threads, Work&& work) {
   std::atomic<std::size_t> next{0}, done{0};
@@ -25,17 +25,30 @@ void run_with_progress(const std::string& label, std::size_t count, int threads,
   std::vector<std::thread> pool;
   for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
   std::thread drawer([&] {
+    // A terminal gets a bar redrawn in place; a log file gets a plain line every ten seconds
+    // and one at the end, with no carriage returns to garble it.
     const bool tty = isatty(2);
+    const auto period = std::chrono::milliseconds(tty ? 100 : 10000);
+    const auto tick = std::chrono::milliseconds(100);
+    auto last = std::chrono::steady_clock::now() - period;
     while (true) {
-      std::size_t d = done.load();
-      int filled = count ? int(30 * d / count) : 30;
-      std::fprintf(stderr, "\r%-12s %zu/%zu [%s%s]", label.c_str(), d, count,
-                   std::string(std::size_t(filled), '=').c_str(),
-                   std::string(std::size_t(30 - filled), ' ').c_str());
+      const std::size_t d = done.load();
+      const auto now = std::chrono::steady_clock::now();
+      if (d >= count || now - last >= period) {
+        last = now;
+        if (tty) {
+          const int filled = count ? int(30 * d / count) : 30;
+          std::fprintf(stderr, "\r%-12s %zu/%zu [%s%s]", label.c_str(), d, count,
+                       std::string(std::size_t(filled), '=').c_str(),
+                       std::string(std::size_t(30 - filled), ' ').c_str());
+        } else {
+          std::fprintf(stderr, "%s %zu/%zu\n", label.c_str(), d, count);
+        }
+      }
       if (d >= count) break;
-      std::this_thread::sleep_for(std::chrono::milliseconds(tty ? 100 : 2000));
+      std::this_thread::sleep_for(tick);
     }
-    std::fprintf(stderr, "\n");
+    if (tty) std::fprintf(stderr, "\n");
   });
   worker();
   for (auto& t : pool) t.join();
