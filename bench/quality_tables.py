@@ -31,7 +31,8 @@ for r in runs:
 # Held-out (leave-one-set-out) scores, and the weights each fold learnt.
 held = {}
 for m in re.finditer(r"held out, learnt weights\s+(\S+)\s+NN ([0-9.]+)\s+FT ([0-9.]+)\s+ST ([0-9.]+)"
-                     r"\s+DCG ([0-9.]+)\s+mAP ([0-9.]+)\n\s+learnt on the other sets: (.*)", tune_text):
+                     r"\s+DCG ([0-9.]+)\s+mAP ([0-9.]+)\n(?:held out, start.*\n)?\s+learnt on the other sets: (.*)",
+                     tune_text):
     held[m.group(1)] = [float(m.group(k)) for k in range(2, 7)] + [m.group(7)]
 train = {}
 for m in re.finditer(r"training \(all sets\)\s+(\S+)\s+NN ([0-9.]+)\s+FT ([0-9.]+)\s+ST ([0-9.]+)"
@@ -57,8 +58,8 @@ for s in sets:
         h = held[s]
         print(f"| {s} | **arg, held out** (weights learnt on the other two sets) | **{h[0]:.3f}** | "
               f"**{h[1]:.3f}** | {h[2]:.3f} | | **{h[3]:.3f}** | {h[4]:.3f} | | | |")
-print("\nWeights each leave-one-set-out fold learnt (from neutral weights, two rounds of "
-      "coordinate search on mean mAP over the two training sets):\n")
+print("\nWeights each leave-one-set-out fold learnt (`argtool tune --mixing-only`: a grid over "
+      "the weights of SIM's three terms, graph fixed at 1, on the two training sets' mean mAP):\n")
 for s in sets:
     if s in held:
         print(f"- held out {s}: `{held[s][5]}`")

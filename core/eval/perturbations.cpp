@@ -167,18 +167,23 @@ Mesh cluster(const Mesh& m, double cell, const Eigen::RowVector3d& shift) {
 // leaves at most `target` vertices (bisection on the length), as decimation tools do.
 Mesh collapse_to(const Mesh& m, double target) {
   double lo = 0, hi = diagonal(m);
-  Mesh best;
+  Mesh best, fewest;
   for (int step = 0; step < 20; ++step) {
     CollapseOptions o;
     o.min_length = 0.5 * (lo + hi);
     Mesh trial = collapse_short_edges(m, o);
+    if (trial.F.rows() > 0 && (fewest.F.rows() == 0 || trial.V.rows() < fewest.V.rows()))
+      fewest = trial;
     if (double(trial.V.rows()) > target) {
       lo = o.min_length;
     } else {
       hi = o.min_length;
-      best = std::move(trial);
+      if (trial.F.rows() > 0) best = std::move(trial);
     }
   }
+  // A soup whose triangles share few edges cannot collapse down to the target (its loose
+  // vertices have nothing to merge with): it is decimated as far as collapses go.
+  if (best.F.rows() == 0) best = std::move(fewest);
   if (best.F.rows() == 0) throw InputError("perturb: nothing of the mesh would be left");
   if (m.has_colour()) best.C.resize(0, 3);  // collapses do not carry colour
   return best;

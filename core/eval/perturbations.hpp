@@ -17,7 +17,8 @@ enum class Perturbation {
   LargeHoles,  // s holes of radius 0.06 D
   Noise,       // Gaussian offset of every vertex, sigma 0.001 s D per axis
   ShotNoise,   // 0.2 s % of the vertices pushed 0.02 D along their normal, either way
-  Decimate,    // edge collapse down to 50 - 7.5 (s - 1) % of the vertices (50% .. 20%)
+  Decimate,    // edge collapse down to 50 - 7.5 (s - 1) % of the vertices (50% .. 20%), or as
+               // far as collapses go on a soup whose triangles share too few edges
   Remesh,      // midpoint subdivision, then edge collapse to (0.75 + 0.25 s) x the vertices:
                // the same surface with another triangulation
   Split,       // s random planes through the middle cut the surface into separate parts

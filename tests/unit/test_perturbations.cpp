@@ -96,3 +96,30 @@ TEST(Perturbations, NamesRoundTripAndBadStrengthsAreRefused) {
 
 }  // namespace
 }  // namespace arg
+
+namespace arg {
+
+// A soup of loose triangles beside a sphere: the triangles have no edge to collapse that
+// would keep them, so half the vertices is out of reach; decimation goes as far as it can.
+TEST(Perturbations, ASoupThatCannotReachTheBudgetIsDecimatedAsFarAsCollapsesGo) {
+  Mesh soup = test::sphere(12, 16);
+  const Eigen::Index sphere_vertices = soup.V.rows(), sphere_faces = soup.F.rows();
+  const int loose = 200;
+  soup.V.conservativeResize(sphere_vertices + 3 * loose, 3);
+  soup.F.conservativeResize(sphere_faces + loose, 3);
+  for (int t = 0; t < loose; ++t) {
+    const Eigen::Index v = sphere_vertices + 3 * t;
+    const Eigen::RowVector3d at(3.0 + 0.1 * t, 0, 0);
+    soup.V.row(v) = at;
+    soup.V.row(v + 1) = at + Eigen::RowVector3d(0.05, 0, 0);
+    soup.V.row(v + 2) = at + Eigen::RowVector3d(0, 0.05, 0);
+    soup.F.row(sphere_faces + t) = Eigen::RowVector3i(int(v), int(v + 1), int(v + 2));
+  }
+  ASSERT_GT(3 * loose, soup.V.rows() / 2);  // the budget is out of reach
+  const Mesh out = perturb(soup, Perturbation::Decimate, 1, 1);
+  EXPECT_GT(out.F.rows(), 0);
+  EXPECT_LT(out.V.rows(), soup.V.rows());
+  EXPECT_GT(out.V.rows(), soup.V.rows() / 2);
+}
+
+}  // namespace arg

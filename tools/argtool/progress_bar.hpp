@@ -5,6 +5,8 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <exception>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -13,12 +15,23 @@ namespace argtool {
 
 // Runs `work(index)` for index in [0, count) on `threads` threads (each index once, any
 // order) while drawing "label  done/count [=====     ]" on stderr (plain lines in a log).
+// When a call throws, no further index is started and the first exception is rethrown here
+// once every thread has finished.
 template <class Work>
 void run_with_progress(const std::string& label, std::size_t count, int threads, Work&& work) {
   std::atomic<std::size_t> next{0}, done{0};
+  std::atomic<bool> finished{false};
+  std::mutex failure_lock;
+  std::exception_ptr failure;
   auto worker = [&] {
     for (std::size_t i = next++; i < count; i = next++) {
-      work(i);
+      try {
+        work(i);
+      } catch (...) {
+        const std::lock_guard<std::mutex> guard(failure_lock);
+        if (!failure) failure = std::current_exception();
+        next = count;  // the others stop at their next index
+      }
       ++done;
     }
   };
@@ -32,9 +45,10 @@ void run_with_progress(const std::string& label, std::size_t count, int threads,
     const auto tick = std::chrono::milliseconds(100);
     auto last = std::chrono::steady_clock::now() - period;
     while (true) {
+      const bool last_frame = finished.load();
       const std::size_t d = done.load();
       const auto now = std::chrono::steady_clock::now();
-      if (d >= count || now - last >= period) {
+      if (last_frame || now - last >= period) {
         last = now;
         if (tty) {
           const int filled = count ? int(30 * d / count) : 30;
@@ -45,14 +59,16 @@ void run_with_progress(const std::string& label, std::size_t count, int threads,
           std::fprintf(stderr, "%s %zu/%zu\n", label.c_str(), d, count);
         }
       }
-      if (d >= count) break;
+      if (last_frame) break;
       std::this_thread::sleep_for(tick);
     }
     if (tty) std::fprintf(stderr, "\n");
   });
   worker();
   for (auto& t : pool) t.join();
+  finished = true;
   drawer.join();
+  if (failure) std::rethrow_exception(failure);
 }
 
 }  // namespace argtool
