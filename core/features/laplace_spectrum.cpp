@@ -8,6 +8,7 @@
 
 #include "mesh/collapse_short_edges.hpp"
 #include "mesh/connected_components.hpp"
+#include "mesh/surface_area.hpp"
 
 namespace arg {
 
@@ -62,15 +63,6 @@ Mesh largest_component(const Mesh& mesh) {
   return out;
 }
 
-double area_of(const Mesh& m) {
-  double a = 0;
-  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
-    a += 0.5 * (m.V.row(m.F(f, 1)) - m.V.row(m.F(f, 0)))
-                   .cross(m.V.row(m.F(f, 2)) - m.V.row(m.F(f, 0)))
-                   .norm();
-  return a;
-}
-
 }  // namespace
 
 std::vector<float> laplace_spectrum(const Mesh& input, int count, const StopRequested& stop) {
@@ -79,7 +71,7 @@ std::vector<float> laplace_spectrum(const Mesh& input, int count, const StopRequ
     // Collapsing the edges shorter than those of an equilateral mesh of 10,000 triangles of
     // the same area leaves about 2000 vertices (measured on SHREC 2007 and SHREC 2011).
     CollapseOptions coarse;
-    coarse.min_length = std::sqrt(4.0 * area_of(mesh) / (std::sqrt(3.0) * 2.0 * 5000.0));
+    coarse.min_length = std::sqrt(4.0 * surface_area(mesh) / (std::sqrt(3.0) * 2.0 * 5000.0));
     mesh = collapse_short_edges(mesh, coarse);
   }
   check_interrupt(stop);

@@ -6,18 +6,14 @@
 #include "io/write_mesh.hpp"
 #include "mesh/clean_mesh.hpp"
 #include "mesh/connected_components.hpp"
+#include "mesh/surface_area.hpp"
 #include "test_shapes.hpp"
 
 namespace arg {
 namespace {
 
 double area(const Mesh& m) {
-  double a = 0;
-  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
-    a += 0.5 * (m.V.row(m.F(f, 1)) - m.V.row(m.F(f, 0)))
-                   .cross(m.V.row(m.F(f, 2)) - m.V.row(m.F(f, 0)))
-                   .norm();
-  return a;
+  return surface_area(m);
 }
 
 const Mesh& model() {

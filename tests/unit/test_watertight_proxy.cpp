@@ -4,6 +4,7 @@
 #include "common/errors.hpp"
 #include "graph/serialize.hpp"
 #include "mesh/connected_components.hpp"
+#include "mesh/surface_area.hpp"
 #include "mesh/watertight_proxy.hpp"
 #include "pipeline/build_arg.hpp"
 #include "test_mesh_inspection.hpp"
@@ -33,15 +34,6 @@ Mesh two_intersecting_boxes() {
   add_box(m, {0, 0, 0}, {2, 1, 1});
   add_box(m, {0.5, -0.5, 0.25}, {1.5, 1.5, 0.75});  // pierces the first box across y
   return m;
-}
-
-double total_area(const Mesh& m) {
-  double a = 0;
-  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
-    a += 0.5 * (m.V.row(m.F(f, 1)) - m.V.row(m.F(f, 0)))
-                   .cross(m.V.row(m.F(f, 2)) - m.V.row(m.F(f, 0)))
-                   .norm();
-  return a;
 }
 
 TEST(WatertightProxy, ASoupOfTwoIntersectingBoxesBecomesOneClosedManifold) {
@@ -80,7 +72,7 @@ TEST(WatertightProxy, ASheetBecomesAThinClosedSlabAndAHoleIsClosed) {
   const test::Inspection r = test::inspect(proxy);
   EXPECT_TRUE(r.every_edge_has_two_triangles && r.every_fan_is_one_cycle);
   EXPECT_EQ(r.euler(), 2);
-  EXPECT_NEAR(total_area(proxy), 4 * M_PI, 0.2 * 4 * M_PI);
+  EXPECT_NEAR(surface_area(proxy), 4 * M_PI, 0.2 * 4 * M_PI);
 }
 
 TEST(WatertightProxy, PartsFartherApartThanTheOffsetStaySeparate) {
