@@ -58,8 +58,9 @@ for s in sets:
         h = held[s]
         print(f"| {s} | **arg, held out** (weights learnt on the other two sets) | **{h[0]:.3f}** | "
               f"**{h[1]:.3f}** | {h[2]:.3f} | | **{h[3]:.3f}** | {h[4]:.3f} | | | |")
-print("\nWeights each leave-one-set-out fold learnt (`argtool tune --mixing-only`: a grid over "
-      "the weights of SIM's three terms, graph fixed at 1, on the two training sets' mean mAP):\n")
+print("\nWeights each leave-one-set-out fold learnt (`argtool tune --mixing-only --proxy-copies`: "
+      "a grid over the weights of SIM's three terms and graph_on_proxy, graph fixed at 1, on the "
+      "mean mAP of the two training sets and of their copies built on proxies):\n")
 for s in sets:
     if s in held:
         print(f"- held out {s}: `{held[s][5]}`")

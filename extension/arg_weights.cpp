@@ -1,8 +1,10 @@
 // The `arg_weights` type's input and output. Text: what arg::parse_weights accepts (a preset,
 // key=value pairs, or both) in, arg::format_weights (canonical, lossless) out. Binary: eleven
-// float4, a byte of switches and three bytes of mixing weights in network byte order (the
-// three bytes may be missing, as clients of 0.1.0 send it), validated like text.
+// float4, a byte of switches (and graph_on_proxy) and three bytes of mixing weights in network
+// byte order (the three bytes may be missing, as clients of 0.1.0 send it), validated like text.
 #include "arg_weights.hpp"
+
+#include <algorithm>
 
 extern "C" {
 #include "libpq/pqformat.h"
@@ -39,6 +41,8 @@ arg::Weights to_weights(const ArgWeights& stored) {
   const bool legacy = stored.mixing[0] == 0 && stored.mixing[1] == 0 && stored.mixing[2] == 0;
   for (int i = 0; i < 3; ++i)
     w.*mixing[i] = legacy ? (i == 0 ? 1.0f : 0.0f) : arg::mixing_weight(stored.mixing[i]);
+  w.graph_on_proxy =
+      arg::mixing_weight(arg::kMaxGraphOnProxySteps - (stored.flags >> argpg::kProxyShift));
   return w;
 }
 
@@ -46,8 +50,11 @@ ArgWeights from_weights(const arg::Weights& weights) {
   ArgWeights stored;
   std::memset(&stored, 0, sizeof stored);
   for (int i = 0; i < 11; ++i) stored.values[i] = weights.*kFields[i];
+  const int proxy =
+      std::clamp(arg::kMaxGraphOnProxySteps - arg::mixing_steps(weights.graph_on_proxy), 0,
+                 arg::kMaxGraphOnProxySteps);
   stored.flags = uint8((weights.l2 ? kL2 : 0) | (weights.tung_rule ? kTungRule : 0) |
-                       (weights.groups ? kGroups : 0));
+                       (weights.groups ? kGroups : 0) | (proxy << kProxyShift));
   stored.mixing[0] = uint8(arg::mixing_steps(weights.graph));
   stored.mixing[1] = uint8(arg::mixing_steps(weights.panorama));
   stored.mixing[2] = uint8(arg::mixing_steps(weights.spectrum));
@@ -95,10 +102,11 @@ Datum arg_weights_recv(PG_FUNCTION_ARGS) {
     ereport(ERROR, (errcode(ERRCODE_INVALID_BINARY_REPRESENTATION),
                     errmsg("invalid binary input for type arg_weights: %d bytes after the value",
                            buf->len - buf->cursor)));
-  if (flags & ~(argpg::kL2 | argpg::kTungRule | argpg::kGroups))
+  if ((flags >> argpg::kProxyShift) > arg::kMaxGraphOnProxySteps)
     ereport(ERROR, (errcode(ERRCODE_INVALID_BINARY_REPRESENTATION),
-                    errmsg("invalid binary input for type arg_weights: unknown switch bits 0x%02x",
-                           flags)));
+                    errmsg("invalid binary input for type arg_weights: graph_on_proxy bits "
+                           "0x%02x (1 - graph_on_proxy must be 0 to 20 steps of 0.05)",
+                           flags >> argpg::kProxyShift)));
   received.flags = uint8(flags);
   // The same checks as text input: the canonical text of these weights must parse back to them.
   argpg::Outcome out = argpg::guarded([&] {

@@ -11,15 +11,18 @@ namespace argpg {
 // the switches, then graph, panorama and spectrum as multiples of arg::kMixingStep. Unused bits
 // are always zero, so equal weights are equal bytes. The three mixing bytes all zero is how
 // values stored before they existed read: the graph alone (graph=1 panorama=0 spectrum=0),
-// which a new value cannot be confused with (at least one of them must be positive).
+// which a new value cannot be confused with (at least one of them must be positive). The top
+// five bits of the switch byte hold 1 - graph_on_proxy in steps of arg::kMixingStep (0..20), so
+// that a value stored before it existed (bits zero) reads as graph_on_proxy=1, as it meant.
 struct ArgWeights {
   float4 values[11];
-  uint8 flags;  // kL2, kTungRule, kGroups
+  uint8 flags;  // kL2, kTungRule, kGroups, and (1 - graph_on_proxy) << kProxyShift
   uint8 mixing[3];
 };
 static_assert(sizeof(ArgWeights) == 48, "arg_weights has INTERNALLENGTH = 48");
 
 inline constexpr uint8 kL2 = 1, kTungRule = 2, kGroups = 4;
+inline constexpr int kProxyShift = 3;  // bits 3..7 of the switch byte: graph_on_proxy
 
 // Plain conversions (no allocation, no exception): safe anywhere.
 arg::Weights to_weights(const ArgWeights& stored);

@@ -67,7 +67,8 @@ SELECT 'alpha_l=.3 beta_l=.15 gamma_l=.15 delta_l=.2 eps_l=.2 alpha_s=.65 beta_s
 SELECT w::text::arg_weights::text = w::text AS text_round_trip
 FROM (SELECT 'mrg lambda_2=0.123456789'::arg_weights AS w) s;
 CREATE TABLE weight_sets (name text, w arg_weights);
-INSERT INTO weight_sets VALUES ('default', 'arg'), ('topology', 'mrg'), ('custom', 'shape tung=off');
+INSERT INTO weight_sets VALUES ('default', 'arg'), ('topology', 'mrg'), ('custom', 'shape tung=off'),
+  ('proxies', 'arg graph_on_proxy=0.35 groups=on norm=l2');
 \copy weight_sets TO 'arg_type_weights.bin' WITH (FORMAT binary)
 CREATE TABLE weight_sets_back (LIKE weight_sets);
 \copy weight_sets_back FROM 'arg_type_weights.bin' WITH (FORMAT binary)
@@ -85,6 +86,7 @@ SELECT ('arg1:' || overlay(t PLACING CASE WHEN substr(t, 2001, 1) = 'B' THEN 'C'
 FROM (SELECT substr(descr::text, 6) AS t FROM models WHERE name = 'cup_0') s;
 SELECT 'lambda_1=-1'::arg_weights;
 SELECT 'lambda_1'::arg_weights;
+SELECT 'arg graph_on_proxy=1.5'::arg_weights;
 SELECT 'alpha_s=0 beta_s=0 lambda_1=0 lambda_2=0 lambda_3=0 lambda_4=0'::arg_weights;
 
 DROP TABLE models, from_text, from_binary, weight_sets, weight_sets_back;

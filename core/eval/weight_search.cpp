@@ -2,6 +2,7 @@
 // weights).
 #include "eval/weight_search.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -17,12 +18,13 @@ struct Knob {
 
 constexpr Knob kKnobs[] = {
     {"graph", &Weights::graph, true},        {"panorama", &Weights::panorama, true},
-    {"spectrum", &Weights::spectrum, true},  {"alpha_s", &Weights::alpha_s, false},
-    {"beta_s", &Weights::beta_s, false},     {"lambda_1", &Weights::lambda_1, false},
-    {"lambda_2", &Weights::lambda_2, false}, {"lambda_3", &Weights::lambda_3, false},
-    {"lambda_4", &Weights::lambda_4, false}, {"alpha_l", &Weights::alpha_l, false},
-    {"beta_l", &Weights::beta_l, false},     {"gamma_l", &Weights::gamma_l, false},
-    {"delta_l", &Weights::delta_l, false},   {"eps_l", &Weights::eps_l, false},
+    {"spectrum", &Weights::spectrum, true},  {"graph_on_proxy", &Weights::graph_on_proxy, true},
+    {"alpha_s", &Weights::alpha_s, false},   {"beta_s", &Weights::beta_s, false},
+    {"lambda_1", &Weights::lambda_1, false}, {"lambda_2", &Weights::lambda_2, false},
+    {"lambda_3", &Weights::lambda_3, false}, {"lambda_4", &Weights::lambda_4, false},
+    {"alpha_l", &Weights::alpha_l, false},   {"beta_l", &Weights::beta_l, false},
+    {"gamma_l", &Weights::gamma_l, false},   {"delta_l", &Weights::delta_l, false},
+    {"eps_l", &Weights::eps_l, false},
 };
 
 bool valid(const Weights& w) {
@@ -50,7 +52,10 @@ Weights search_weights(const Weights& start, const std::function<double(const We
       const float current = best.*k.member;
       float trials[3] = {current * 0.5f, current * 2.0f, current == 0 ? 0.1f : 0.0f};
       if (k.mixing)
-        for (float& t : trials) t = mixing_weight(std::min(255, std::max(0, mixing_steps(t))));
+        for (float& t : trials)
+          t = mixing_weight(
+              std::clamp(mixing_steps(t), 0,
+                         k.member == &Weights::graph_on_proxy ? kMaxGraphOnProxySteps : 255));
       for (float value : trials) {
         if (value == current) continue;
         Weights w = best;
@@ -78,15 +83,18 @@ Weights grid_search_mixing(const Weights& start,
                            const std::function<double(const Weights&)>& objective) {
   Weights best = start;
   double best_score = -1;
-  for (int panorama : {10, 20, 30, 40, 60, 80, 120})  // in steps of kMixingStep
-    for (int spectrum : {0, 2, 5, 10, 20, 30, 40, 60}) {
-      Weights w = start;
-      w.graph = mixing_weight(20);
-      w.panorama = mixing_weight(panorama);
-      w.spectrum = mixing_weight(spectrum);
-      const double score = objective(w);
-      if (score > best_score) best = w, best_score = score;
-    }
+  // In steps of kMixingStep: about 1.3 times apart, finer than the objective's noise.
+  for (int proxy : {20, 15, 10, 7, 5})
+    for (int panorama : {10, 15, 20, 25, 30, 40, 50, 60, 80, 100, 120, 160})
+      for (int spectrum : {0, 2, 3, 5, 7, 10, 15, 20, 25, 30, 40, 60}) {
+        Weights w = start;
+        w.graph = mixing_weight(20);
+        w.panorama = mixing_weight(panorama);
+        w.spectrum = mixing_weight(spectrum);
+        w.graph_on_proxy = mixing_weight(proxy);
+        const double score = objective(w);
+        if (score > best_score) best = w, best_score = score;
+      }
   return best;
 }
 

@@ -9,9 +9,9 @@
 namespace arg {
 
 // Starting from `start`, visits every weight in a fixed order (the mixing weights graph,
-// panorama and spectrum first, then those of sim and of the loss) and tries it multiplied by
-// 0.5 and 2 (or set to 0.1 when it is 0, or to 0), mixing weights rounded to their grid,
-// keeping a change only when the objective grows by more than `min_gain`; repeats for
+// panorama, spectrum and graph_on_proxy first, then those of sim and of the loss) and tries it
+// multiplied by 0.5 and 2 (or set to 0.1 when it is 0, or to 0), mixing weights rounded to their
+// grid, keeping a change only when the objective grows by more than `min_gain`; repeats for
 // `rounds` passes or until a pass changes nothing. `mixing_only` leaves the graph's own
 // weights alone. `log` (optional) hears each accepted change. Deterministic for a
 // deterministic objective.
@@ -20,10 +20,12 @@ Weights search_weights(const Weights& start, const std::function<double(const We
                        const std::function<void(const std::string&)>& log = {},
                        bool mixing_only = false);
 
-// Tries every panorama weight in {0.5, 1, 1.5, 2, 3, 4, 6} with every spectrum weight in
-// {0, 0.1, 0.25, 0.5, 1, 1.5, 2, 3} (graph weight 1, everything else as in `start`) and returns
-// the best by `objective` (the first in that order on ties). Coarse on purpose: 56 choices of
-// two numbers leave the training sets little to overfit.
+// Tries every panorama weight in {0.5, 0.75, 1, 1.25, 1.5, 2, 2.5, 3, 4, 5, 6, 8} with every
+// spectrum weight in {0, 0.1, 0.15, 0.25, 0.35, 0.5, 0.75, 1, 1.25, 1.5, 2, 3} and every
+// graph_on_proxy in {1, 0.75, 0.5, 0.35, 0.25} (graph weight 1, everything else as in `start`)
+// and returns the best by `objective` (the first in that order on ties, so graph_on_proxy stays
+// 1 when no training model was built on a proxy). A grid about 1.3 times apart: finer steps
+// would only follow the noise of the training sets' scores.
 Weights grid_search_mixing(const Weights& start,
                            const std::function<double(const Weights&)>& objective);
 

@@ -102,7 +102,9 @@ double graph_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& wei
 SimilarityParts similarity_parts(const ArgGraph& a, const ArgGraph& b, const Weights& w,
                                  std::vector<MatchPair>* matches) {
   SimilarityParts p;
-  p.w_graph = w.graph;
+  // A proxy's graph is a shell's (weights.hpp): it counts its share graph_on_proxy.
+  const bool on_proxy = ((a.summary.flags | b.summary.flags) & kFlagProxy) != 0;
+  p.w_graph = on_proxy ? w.graph * w.graph_on_proxy : w.graph;
   if (w.panorama > 0 && !a.panorama.empty() && !b.panorama.empty()) {
     p.w_panorama = w.panorama;
     p.panorama = panorama_distance(a.panorama, b.panorama);

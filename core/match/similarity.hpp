@@ -21,8 +21,9 @@ struct MatchPair {
 };
 
 // SIM(A, B) in [0, 1]: 0 for identical values, exactly symmetric. The weighted mean of the
-// graph's SIM and the whole-shape distances (Weights::graph, panorama, spectrum); a term one
-// of the values lacks is left out. Fills `matches` (the graph's node pairs) if given.
+// graph's SIM and the whole-shape distances (Weights::graph, panorama, spectrum; the graph's
+// weight times graph_on_proxy when either was built on a proxy); a term one of the values
+// lacks is left out. Fills `matches` (the graph's node pairs) if given.
 double arg_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& weights = {},
                       std::vector<MatchPair>* matches = nullptr);
 

@@ -21,18 +21,31 @@ struct Field {
   float Weights::*member;
 };
 constexpr Field kFields[] = {
-    {"alpha_l", &Weights::alpha_l},   {"beta_l", &Weights::beta_l},
-    {"gamma_l", &Weights::gamma_l},   {"delta_l", &Weights::delta_l},
-    {"eps_l", &Weights::eps_l},       {"alpha_s", &Weights::alpha_s},
-    {"beta_s", &Weights::beta_s},     {"lambda_1", &Weights::lambda_1},
-    {"lambda_2", &Weights::lambda_2}, {"lambda_3", &Weights::lambda_3},
-    {"lambda_4", &Weights::lambda_4}, {"graph", &Weights::graph},
-    {"panorama", &Weights::panorama}, {"spectrum", &Weights::spectrum},
+    {"alpha_l", &Weights::alpha_l},
+    {"beta_l", &Weights::beta_l},
+    {"gamma_l", &Weights::gamma_l},
+    {"delta_l", &Weights::delta_l},
+    {"eps_l", &Weights::eps_l},
+    {"alpha_s", &Weights::alpha_s},
+    {"beta_s", &Weights::beta_s},
+    {"lambda_1", &Weights::lambda_1},
+    {"lambda_2", &Weights::lambda_2},
+    {"lambda_3", &Weights::lambda_3},
+    {"lambda_4", &Weights::lambda_4},
+    {"graph", &Weights::graph},
+    {"panorama", &Weights::panorama},
+    {"spectrum", &Weights::spectrum},
+    {"graph_on_proxy", &Weights::graph_on_proxy},
 };
 
 bool is_mixing(const Field& f) {
   return f.member == &Weights::graph || f.member == &Weights::panorama ||
-         f.member == &Weights::spectrum;
+         f.member == &Weights::spectrum || f.member == &Weights::graph_on_proxy;
+}
+
+// The largest number of kMixingStep steps a mixing weight may take (its storage in SQL).
+int max_steps(const Field& f) {
+  return f.member == &Weights::graph_on_proxy ? kMaxGraphOnProxySteps : 255;
 }
 
 bool try_preset(std::string_view name, Weights& w) {
@@ -47,12 +60,14 @@ bool try_preset(std::string_view name, Weights& w) {
     w.lambda_1 = w.lambda_2 = w.lambda_3 = w.lambda_4 = 0;
     w.graph = 1;
     w.panorama = w.spectrum = 0;
+    w.graph_on_proxy = 1;
     w.tung_rule = false;
     w.groups = true;
   } else if (name == "graph") {  // the augmented graph alone, without whole-shape terms
     w = arg;
     w.graph = 1;
     w.panorama = w.spectrum = 0;
+    w.graph_on_proxy = 1;
   } else if (name == "shape") {  // geometry and features, colour ignored
     w = arg;
     w.lambda_4 = 0;
@@ -74,6 +89,8 @@ void validate(const Weights& w) {
   if (w.alpha_s + w.beta_s + w.lambda_1 + w.lambda_2 + w.lambda_3 + w.lambda_4 <= 0)
     throw InputError(std::string(kWhat) +
                      ": at least one of alpha_s, beta_s, lambda_1..lambda_4 must be positive");
+  if (mixing_steps(w.graph_on_proxy) > kMaxGraphOnProxySteps)
+    throw InputError(std::string(kWhat) + ": graph_on_proxy must be at most 1");
   if (w.graph + w.panorama + w.spectrum <= 0)
     throw InputError(std::string(kWhat) +
                      ": at least one of graph, panorama, spectrum must be positive");
@@ -145,9 +162,10 @@ Weights parse_weights(std::string_view text) {
         if (is_mixing(f)) {
           // Stored in a byte each (arg_weights keeps its 48 bytes): steps of kMixingStep.
           const double steps = std::round(x / kMixingStep);
-          if (x < 0 || steps > 255 || std::fabs(x / kMixingStep - steps) > 1e-6)
+          if (x < 0 || steps > max_steps(f) || std::fabs(x / kMixingStep - steps) > 1e-6)
             throw InputError("weights: " + key + "=" + value +
-                             " must be a multiple of 0.05 in [0, 12.75]");
+                             " must be a multiple of 0.05 in [0, " +
+                             (max_steps(f) == 255 ? "12.75" : "1") + "]");
           w.*f.member = mixing_weight(int(steps));
         } else {
           if (x < 0 || x > 1e6)
@@ -157,9 +175,10 @@ Weights parse_weights(std::string_view text) {
         known = true;
       }
     if (!known)
-      throw InputError("weights: unknown key \"" + key +
-                       "\" (expected alpha_l beta_l gamma_l delta_l eps_l alpha_s beta_s "
-                       "lambda_1..lambda_4 graph panorama spectrum norm tung groups)");
+      throw InputError(
+          "weights: unknown key \"" + key +
+          "\" (expected alpha_l beta_l gamma_l delta_l eps_l alpha_s beta_s "
+          "lambda_1..lambda_4 graph panorama spectrum graph_on_proxy norm tung groups)");
   }
   validate(w);
   return w;

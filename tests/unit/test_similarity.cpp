@@ -76,8 +76,43 @@ TEST(Similarity, MatchesListPairsOfBothGraphsLevelByLevel) {
   EXPECT_EQ(forward, backward);
 }
 
+TEST(Similarity, AProxyGraphCountsItsShareGraphOnProxy) {
+  const auto& g = shapes();
+  ArgGraph proxy = g[1];
+  proxy.summary.flags |= kFlagProxy;
+  Weights w = weights_preset("arg");
+  for (float share : {1.0f, 0.5f, 0.0f}) {
+    w.graph_on_proxy = share;
+    const SimilarityParts mesh = similarity_parts(g[0], g[1], w);
+    const SimilarityParts parts = similarity_parts(g[0], proxy, w);
+    EXPECT_DOUBLE_EQ(mesh.w_graph, w.graph) << "no proxy, full weight";
+    EXPECT_DOUBLE_EQ(parts.w_graph, double(w.graph) * share);
+    EXPECT_EQ(parts.w_spectrum, 0.0) << "a proxy has no spectrum term";
+    EXPECT_EQ(similarity_parts(proxy, g[0], w).sim, parts.sim) << "symmetric";
+    const double mean = (parts.w_graph * parts.graph + parts.w_panorama * parts.panorama) /
+                        (parts.w_graph + parts.w_panorama);
+    EXPECT_NEAR(parts.sim, mean, 1e-12);
+  }
+  // With no share left for the graph, SIM is the views' distance alone.
+  EXPECT_NEAR(similarity_parts(g[0], proxy, w).sim,
+              similarity_parts(g[0], proxy, w).panorama, 1e-12);
+}
+
+TEST(Weights, GraphOnProxyIsAShareOnTheMixingGrid) {
+  EXPECT_FLOAT_EQ(parse_weights("graph_on_proxy=0.35").graph_on_proxy, 0.35f);
+  EXPECT_FLOAT_EQ(weights_preset("mrg").graph_on_proxy, 1.0f) << "the graph alone, as before";
+  EXPECT_FLOAT_EQ(weights_preset("graph").graph_on_proxy, 1.0f);
+  for (const char* bad : {"graph_on_proxy=1.05", "graph_on_proxy=0.33", "graph_on_proxy=-0.05"})
+    EXPECT_THROW(parse_weights(bad), InputError) << bad;
+  try {
+    parse_weights("graph_on_proxy=2");
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("[0, 1]"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Weights, TextRoundTripAndPresets) {
-  for (const char* preset : {"arg", "mrg", "shape", "colour"}) {
+  for (const char* preset : {"arg", "mrg", "graph", "shape", "colour"}) {
     Weights w = weights_preset(preset);
     EXPECT_EQ(parse_weights(format_weights(w)), w) << preset;
     EXPECT_EQ(parse_weights(preset), w);

@@ -27,7 +27,7 @@ struct TuneArgs {
   std::vector<std::string> labels;
   std::string root, cache, start = "arg", objective = "map";
   int folds = 2, rounds = 3;
-  bool mixing_only = false;
+  bool mixing_only = false, proxy_copies = false;
   int threads = int(std::max(1u, std::thread::hardware_concurrency()));
   arg::BuildOptions options;
 };
@@ -35,6 +35,7 @@ struct TuneArgs {
 // One labelled set with its models and the pairwise distances that do not depend on weights.
 struct Set {
   std::string name;
+  int copy_of = -1;  // a --proxy-copies set: the index of the set it copies
   arg::LabelSet labels;
   std::vector<argtool::Model> models;
   std::vector<double> panorama, spectrum;  // n x n, in [0, 1]; spectrum -1: left out
@@ -94,6 +95,9 @@ arg::RetrievalScores scores_within(const Set& s, const std::vector<int>& members
   // on which arg_similarity then falls back.
   const bool need_graph = w.graph > 0 || w.panorama <= 0;
   const std::vector<double>* g = need_graph ? &graphs.get(index, members, w) : nullptr;
+  auto on_proxy = [&](std::size_t m) {
+    return (s.models[m].graph.summary.flags & arg::kFlagProxy) != 0;
+  };
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t mi = std::size_t(members[i]);
     label[i] = s.labels.class_of[mi];
@@ -103,9 +107,11 @@ arg::RetrievalScores scores_within(const Set& s, const std::vector<int>& members
       const std::size_t mj = std::size_t(members[j]);
       const double spectrum = s.spectrum[mi * all + mj];
       const double w_spectrum = spectrum < 0 ? 0.0 : double(w.spectrum);
+      const double w_graph =
+          on_proxy(mi) || on_proxy(mj) ? double(w.graph) * w.graph_on_proxy : double(w.graph);
       double d = w.panorama * s.panorama[mi * all + mj] + w_spectrum * std::max(spectrum, 0.0);
-      if (g) d += w.graph * (*g)[i * n + j];
-      const double total = double(w.graph) + w.panorama + w_spectrum;
+      if (g) d += w_graph * (*g)[i * n + j];
+      const double total = w_graph + w.panorama + w_spectrum;
       distance[i * n + j] = total > 0 ? d / total : (*g)[i * n + j];
     }
   }
@@ -150,27 +156,41 @@ const bool registered = argtool::register_command(
                      "over the training sets")
           ->check(CLI::IsMember({"map", "psb"}));
       app.add_flag("--mixing-only", a->mixing_only,
-                   "search only the graph, panorama and spectrum weights, on a coarse grid "
-                   "(the graph's own weights stay as in --start)");
+                   "search only the graph, panorama, spectrum and graph_on_proxy weights, on a "
+                   "grid (the graph's own weights stay as in --start)");
+      app.add_flag("--proxy-copies", a->proxy_copies,
+                   "also build every set on watertight proxies (surface=proxy) and train on "
+                   "those copies too (never on the copy of a held-out set), so that "
+                   "graph_on_proxy is learnt from proxies of the training shapes");
       app.add_option("--threads", a->threads, "worker threads")->check(CLI::Range(1, 256));
       app.add_option("--cache", a->cache, "folder caching built ARGs between runs");
       argtool::add_build_flags(app, a->options, false);
       return [a] {
         if (!a->root.empty() && a->labels.size() > 1)
           throw std::runtime_error("--root applies to one labels file only");
+        if (a->proxy_copies && a->labels.size() < 2)
+          throw std::runtime_error("--proxy-copies needs several --labels sets (leave one out)");
         if (!a->cache.empty()) fs::create_directories(a->cache);
-        std::vector<Set> sets(a->labels.size());
+        const std::size_t given = a->labels.size();
+        std::vector<Set> sets(a->proxy_copies ? 2 * given : given);
         for (std::size_t k = 0; k < sets.size(); ++k) {
           Set& s = sets[k];
-          const fs::path p(a->labels[k]);
-          s.name = argtool::set_name(a->labels[k]);
-          s.labels = arg::parse_label_csv(argtool::read_file_bytes(a->labels[k]));
+          const std::size_t source = k % given;
+          const fs::path p(a->labels[source]);
+          s.name = argtool::set_name(a->labels[source]);
+          arg::BuildOptions options = a->options;
+          if (k >= given) {
+            s.copy_of = int(source);
+            s.name += "/proxy";
+            options.surface = arg::SurfaceKind::Proxy;
+          }
+          s.labels = arg::parse_label_csv(argtool::read_file_bytes(a->labels[source]));
           const fs::path root = a->root.empty() ? p.parent_path() : fs::path(a->root);
           s.models.resize(s.labels.models.size());
           argtool::run_with_progress(
               "build " + s.name, s.models.size(), a->threads, [&](std::size_t i) {
                 argtool::prepare_model(s.models[i], (root / s.labels.models[i].path).string(),
-                                       a->options, a->cache, true);
+                                       options, a->cache, true);
               });
           const std::size_t n = s.models.size();
           s.panorama.assign(n * n, 1.0), s.spectrum.assign(n * n, 1.0);
@@ -197,7 +217,7 @@ const bool registered = argtool::register_command(
         };
         std::vector<std::string> report;
 
-        if (sets.size() == 1) {
+        if (given == 1) {
           // Stratified folds: the k-th model of each class goes to fold k mod folds.
           const Set& s = sets[0];
           std::vector<int> fold(s.models.size()), seen(s.labels.classes.size(), 0);
@@ -221,16 +241,19 @@ const bool registered = argtool::register_command(
           std::printf("cross-validated mAP %.4f (start weights %.4f) over %d folds\n",
                       held_sum / a->folds, base_sum / a->folds, a->folds);
         } else {
-          // Leave one set out: learn on the others (each weighs the same), score on it.
-          for (std::size_t out = 0; out < sets.size(); ++out) {
+          // Leave one set out: learn on the others and their proxy copies (each weighs the
+          // same), score on it.
+          for (std::size_t out = 0; out < given; ++out) {
             std::fprintf(stderr, "held out: %s\n", sets[out].name.c_str());
+            std::vector<std::size_t> train;
+            for (std::size_t k = 0; k < sets.size(); ++k)
+              if (k != out && sets[k].copy_of != int(out)) train.push_back(k);
             const arg::Weights learnt = search([&](const arg::Weights& w) {
               double sum = 0;
-              for (std::size_t k = 0; k < sets.size(); ++k)
-                if (k != out)
-                  sum += objective_of(scores_within(sets[k], everyone(sets[k]), w, graphs, k),
-                                      a->objective);
-              return sum / double(sets.size() - 1);
+              for (std::size_t k : train)
+                sum += objective_of(scores_within(sets[k], everyone(sets[k]), w, graphs, k),
+                                    a->objective);
+              return sum / double(train.size());
             });
             const auto held = scores_within(sets[out], everyone(sets[out]), learnt, graphs, out);
             const auto base = scores_within(sets[out], everyone(sets[out]), start, graphs, out);

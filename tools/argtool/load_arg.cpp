@@ -39,6 +39,12 @@ void add_build_flags(CLI::App& app, arg::BuildOptions& options, bool with_thread
       ->check(CLI::IsMember({"geodesic", "height", "centroid"}));
   app.add_option("--base-points", options.base_points, "base points of the geodesic integral")
       ->check(CLI::Range(8, 4096));
+  app.add_option_function<std::string>(
+      "--build-options",
+      [&options](const std::string& text) {
+        options = arg::parse_build_options(arg::format_build_options(options) + " " + text);
+      },
+      "further build options as key=value text (surface=proxy proxy_resolution=64 ...)");
   if (!with_threads) return;
   app.add_option("--threads", options.threads, "threads for mu (never changes the result)")
       ->check(CLI::Range(1, 256));
