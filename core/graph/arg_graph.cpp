@@ -5,7 +5,7 @@ namespace arg {
 
 std::uint32_t current_builder_version() {
   // Bump when a change to the method changes the bytes built from the same mesh.
-  return 1 * 10000 + 0 * 100 + 0;
+  return 1 * 10000 + 1 * 100 + 0;
 }
 
 }  // namespace arg

@@ -140,12 +140,16 @@ Header read_header(ByteReader& in, std::string_view bytes, ArgGraph& g, bool che
   }
   g.format = h.version;
   if (h.version == 1) {
-    g.options.surface = SurfaceKind::Mesh;  // format 1 predates the proxy
+    g.options.surface = SurfaceKind::Mesh;  // format 1 predates the proxy and hole filling
+    g.options.holes = HoleKind::Keep;
   } else {
     const std::uint8_t surface = in.get<std::uint8_t>();
     if (surface > 2) in.fail("surface kind " + std::to_string(surface));
-    if (in.get<std::uint8_t>() != 0) in.fail("reserved header byte is not zero");
+    // Values written before holes could be filled have 0 here, which reads as holes=keep.
+    const std::uint8_t holes = in.get<std::uint8_t>();
+    if (holes > 1) in.fail("hole kind " + std::to_string(holes));
     g.options.surface = SurfaceKind(surface);
+    g.options.holes = HoleKind(holes);
     g.options.proxy_resolution = in.get<std::uint16_t>();
     if (g.options.proxy_resolution < 16 || g.options.proxy_resolution > 256)
       in.fail("proxy resolution " + std::to_string(g.options.proxy_resolution));
@@ -330,7 +334,7 @@ std::string serialize_arg(const ArgGraph& g) {
   for (float x : g.global) out.put(x);
   if (!first) {
     out.put(std::uint8_t(g.options.surface));
-    out.put(std::uint8_t(0));
+    out.put(std::uint8_t(g.options.holes));
     out.put(std::uint16_t(g.options.proxy_resolution));
   }
   for (const ArgNode& node : g.nodes) for_each_field(node, [&](auto x) { out.put(x); });

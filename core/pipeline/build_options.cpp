@@ -30,6 +30,10 @@ const char* surface_kind_name(SurfaceKind kind) {
   return "auto";
 }
 
+const char* hole_kind_name(HoleKind kind) {
+  return kind == HoleKind::Keep ? "keep" : "fill";
+}
+
 BuildOptions parse_build_options(std::string_view text) {
   static const char* what = "build options";
   BuildOptions options;
@@ -58,12 +62,19 @@ BuildOptions parse_build_options(std::string_view text) {
         throw InputError("build options: surface=" + value + " (expected auto, mesh or proxy)");
     } else if (key == "proxy_resolution") {
       options.proxy_resolution = int(parse_integer(value, key, what, 16, 256));
+    } else if (key == "holes") {
+      if (value == "fill")
+        options.holes = HoleKind::Fill;
+      else if (value == "keep")
+        options.holes = HoleKind::Keep;
+      else
+        throw InputError("build options: holes=" + value + " (expected fill or keep)");
     } else if (key == "threads") {
       options.threads = int(parse_integer(value, key, what, 1, 256));
     } else {
       throw InputError(
           "build options: unknown key \"" + key +
-          "\" (expected levels, mu, base_points, surface, proxy_resolution or threads)");
+          "\" (expected levels, mu, base_points, surface, proxy_resolution, holes or threads)");
     }
   }
   return options;
@@ -73,7 +84,8 @@ std::string format_build_options(const BuildOptions& options) {
   return "levels=" + std::to_string(options.levels) + " mu=" + mu_kind_name(options.mu) +
          " base_points=" + std::to_string(options.base_points) +
          " surface=" + surface_kind_name(options.surface) +
-         " proxy_resolution=" + std::to_string(options.proxy_resolution);
+         " proxy_resolution=" + std::to_string(options.proxy_resolution) +
+         " holes=" + hole_kind_name(options.holes);
 }
 
 }  // namespace arg

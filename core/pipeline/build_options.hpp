@@ -15,19 +15,25 @@ enum class MuKind : std::uint8_t { Geodesic = 0, Height = 1, Centroid = 2 };
 // edges (more than 0.1% of its edges), not for holes alone.
 enum class SurfaceKind : std::uint8_t { Auto = 0, Mesh = 1, Proxy = 2 };
 
+// What happens to the holes of an open surface that is built on itself (not on a proxy):
+// closed by a fan of triangles (mesh/fill_holes.hpp) or kept as they are.
+enum class HoleKind : std::uint8_t { Keep = 0, Fill = 1 };
+
 struct BuildOptions {
   int levels = 5;  // n: the finest level has 2^n intervals of mu; levels 0..n are kept
   MuKind mu = MuKind::Geodesic;
   int base_points = 128;  // K, base points of the geodesic integral
   SurfaceKind surface = SurfaceKind::Auto;
   int proxy_resolution = 48;  // grid cells along the longest side of the proxy's grid
-  int threads = 1;            // worker threads for mu; never changes the result
+  HoleKind holes = HoleKind::Fill;
+  int threads = 1;  // worker threads for mu; never changes the result
 };
 
 inline constexpr int kMaxLevels = 7;
 
-// Parses "levels=5 mu=geodesic base_points=128 surface=auto proxy_resolution=48 threads=2" (any
-// order, any subset; empty gives the defaults). Throws InputError naming the bad key or value.
+// Parses "levels=5 mu=geodesic base_points=128 surface=auto proxy_resolution=48 holes=fill
+// threads=2" (any order, any subset; empty gives the defaults). Throws InputError naming the bad
+// key or value.
 BuildOptions parse_build_options(std::string_view text);
 
 // The canonical text form of the options that change the result (threads is left out).
@@ -35,5 +41,6 @@ std::string format_build_options(const BuildOptions& options);
 
 const char* mu_kind_name(MuKind kind);
 const char* surface_kind_name(SurfaceKind kind);
+const char* hole_kind_name(HoleKind kind);
 
 }  // namespace arg

@@ -1,8 +1,12 @@
 // Cleaning, pose normalisation and the choice between the mesh and its proxy.
 #include "pipeline/prepare_surface.hpp"
 
+#include <cmath>
+
 #include "common/errors.hpp"
 #include "mesh/connected_components.hpp"
+#include "mesh/fill_holes.hpp"
+#include "mesh/surface_area.hpp"
 #include "mesh/watertight_proxy.hpp"
 
 namespace arg {
@@ -11,33 +15,47 @@ PreparedSurface prepare_surface(const Mesh& input, const BuildOptions& options,
                                 const StopRequested& stop) {
   PreparedSurface out;
   Mesh mesh = clean_mesh(input, &out.clean, stop);
+  // Whether the surface is in pieces, and how open it is, before any hole is filled: both
+  // ratios below are the same before and after the pose.
+  std::vector<int> component;
+  out.components = std::size_t(vertex_components(mesh, component));
+  // Components are numbered by decreasing area: the second one tells whether the surface is
+  // in pieces or merely carries specks.
+  double second = 0, total = 0;
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    const double a = 0.5 * (mesh.V.row(mesh.F(f, 1)) - mesh.V.row(mesh.F(f, 0)))
+                               .cross(mesh.V.row(mesh.F(f, 2)) - mesh.V.row(mesh.F(f, 0)))
+                               .norm();
+    total += a;
+    if (component[std::size_t(mesh.F(f, 0))] == 1) second += a;
+  }
+  double boundary = 0;
+  {
+    const MeshEdges edges = mesh_edges(mesh.F);
+    for (int e = 0; e < edges.count(); ++e)
+      if (edges.faces(e) == 1)
+        boundary += (mesh.V.row(edges.v0[e]) - mesh.V.row(edges.v1[e])).norm();
+    const bool broken =
+        second >= 0.01 * total || out.clean.nonmanifold_edges * 1000 > std::size_t(edges.count());
+    out.use_proxy =
+        options.surface == SurfaceKind::Proxy || (options.surface == SurfaceKind::Auto && broken);
+  }
+  // Holes alone do not call for the proxy: a manifold surface in one piece gets its holes
+  // closed (fill_holes.hpp), unless it is wide open (a sheet: no closed shape to restore).
+  const bool wide = boundary > 4.0 * std::sqrt(total);
+  if (options.holes == HoleKind::Fill && !out.use_proxy && boundary > 0 && !wide &&
+      out.clean.nonmanifold_edges == 0) {
+    FillReport filled;
+    mesh = fill_holes(mesh, &filled);
+    out.filled_loops = filled.loops;
+  }
   out.pose = surface_pose(mesh);
   if (!(out.pose.area > 0)) throw InputError("mesh has zero surface area");
   out.posed = apply_pose(mesh, out.pose);
-  std::vector<int> component;
-  out.components = std::size_t(vertex_components(out.posed, component));
-  // Components are numbered by decreasing area: the second one tells whether the surface is
-  // in pieces or merely carries specks. Holes alone do not call for the proxy: mu crosses a
-  // small hole nearly unchanged (the geodesic integral averages many paths).
-  double second = 0, total = 0;
-  for (Eigen::Index f = 0; f < out.posed.F.rows(); ++f) {
-    const double a =
-        0.5 * (out.posed.V.row(out.posed.F(f, 1)) - out.posed.V.row(out.posed.F(f, 0)))
-                  .cross(out.posed.V.row(out.posed.F(f, 2)) - out.posed.V.row(out.posed.F(f, 0)))
-                  .norm();
-    total += a;
-    if (component[std::size_t(out.posed.F(f, 0))] == 1) second += a;
-  }
-  out.area = total;
+  out.boundary_length = boundary * out.pose.scale;
+  out.area = surface_area(out.posed);
   out.posed_edges = mesh_edges(out.posed.F);
-  const MeshEdges& edges_of = out.posed_edges;
-  for (int e = 0; e < edges_of.count(); ++e)
-    if (edges_of.faces(e) == 1)
-      out.boundary_length +=
-          (out.posed.V.row(edges_of.v0[e]) - out.posed.V.row(edges_of.v1[e])).norm();
-  const std::size_t edges = std::size_t(edges_of.count());
-  const bool broken = second >= 0.01 * total || out.clean.nonmanifold_edges * 1000 > edges;
-  if (options.surface == SurfaceKind::Proxy || (options.surface == SurfaceKind::Auto && broken)) {
+  if (out.use_proxy) {
     ProxyOptions proxy;
     proxy.resolution = options.proxy_resolution;
     out.proxy = watertight_proxy(out.posed, proxy, stop).mesh;

@@ -16,12 +16,14 @@ namespace arg {
 struct PreparedSurface {
   CleanReport clean;
   Pose pose;
-  std::size_t components = 0;  // connected components of the cleaned mesh
-  double boundary_length = 0;  // of its boundary edges, in the units of `posed`
-  double area = 0;             // of `posed`
-  Mesh posed;                  // the cleaned mesh, centred, aligned and scaled (apply_pose)
-  MeshEdges posed_edges;       // its edges
-  std::optional<Mesh> proxy;   // its watertight proxy, when options.surface chose one
+  std::size_t components = 0;    // connected components of the cleaned mesh
+  double boundary_length = 0;    // of its boundary edges (before any was filled), posed units
+  double area = 0;               // of `posed`
+  bool use_proxy = false;        // mu and the graph run on `proxy`
+  std::size_t filled_loops = 0;  // holes closed by fill_holes (options.holes=fill)
+  Mesh posed;  // the cleaned mesh (holes filled), centred, aligned and scaled (apply_pose)
+  MeshEdges posed_edges;      // its edges
+  std::optional<Mesh> proxy;  // its watertight proxy, when options.surface chose one
 
   // A boundary longer than 4 sqrt(area) (kFlagWideOpen): a sheet, or openings far larger
   // than holes in a scan (twenty holes of 2% of the size make about 2.5 sqrt(area); sheets
@@ -32,9 +34,10 @@ struct PreparedSurface {
   const Mesh& surface() const { return proxy ? *proxy : posed; }
 };
 
-// Cleans `input`, normalises its pose and, for surface=proxy (or auto on a mesh in pieces or
-// with non-manifold edges: build_options.hpp), makes its proxy in the same frame. Throws
-// InputError for a mesh without area.
+// Cleans `input`, closes the holes of a manifold surface in one piece that is not wide open
+// (holes=fill), normalises its pose and, for surface=proxy (or auto on a mesh in pieces or with
+// non-manifold edges: build_options.hpp), makes its proxy in the same frame. Throws InputError
+// for a mesh without area.
 PreparedSurface prepare_surface(const Mesh& input, const BuildOptions& options,
                                 const StopRequested& stop = {});
 

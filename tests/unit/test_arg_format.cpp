@@ -37,9 +37,21 @@ TEST(ArgFormat, VersionTwoRoundTripsBinaryAndTextByteForByte) {
   EXPECT_EQ(back.spectrum, g.spectrum);
   EXPECT_EQ(back.options.surface, g.options.surface);
   EXPECT_EQ(back.options.proxy_resolution, g.options.proxy_resolution);
+  EXPECT_EQ(back.options.holes, HoleKind::Fill);
   EXPECT_EQ(serialize_arg(back), bytes);
   EXPECT_EQ(arg_from_text(arg_to_text(bytes)), bytes);
   EXPECT_EQ(arg_similarity(g, back), 0.0);
+}
+
+TEST(ArgFormat, TheHoleOptionLivesInTheFormerlyReservedByte) {
+  BuildOptions keep;
+  keep.holes = HoleKind::Keep;
+  std::string bytes = serialize_arg(build_arg(test::torus(), keep));
+  EXPECT_EQ(deserialize_arg(bytes).options.holes, HoleKind::Keep) << "written before filling: 0";
+  EXPECT_EQ(deserialize_arg(serialize_arg(build_arg(test::torus()))).options.holes, HoleKind::Fill);
+  EXPECT_EQ(parse_build_options("holes=keep").holes, HoleKind::Keep);
+  EXPECT_NE(format_build_options(BuildOptions{}).find("holes=fill"), std::string::npos);
+  EXPECT_THROW(parse_build_options("holes=patch"), InputError);
 }
 
 TEST(ArgFormat, VersionOneValuesReadAndCompareAsIn010) {
