@@ -7,6 +7,7 @@
 #   round trips tests/sql_roundtrip.sh: pg_dump/pg_restore and COPY (FORMAT binary) of arg values
 #   cancel      tests/cancel/cancel.sh: statement_timeout and pg_cancel_backend stop long statements
 #   memory      tests/oom/out_of_memory.sh: a backend out of address space gets 53200 and goes on
+#   python      pytest on clients/python/tests: the psycopg client (Debian's python3, or $ARG_PYTHON)
 #   server log  no backend of the throwaway cluster died ("terminated by signal") during the above
 #   shards      tests/scale/shards.sh: postgres_fdw, a coordinator and two shards (its own clusters)
 #   sanitizers  the unit tests again, built with ASan + UBSan in build-asan/
@@ -69,6 +70,22 @@ tap_script() {
   fi
   "$@" 2>&1 | tee "$log"
   line_suite "$name" "$log" "${PIPESTATUS[0]}" '^[[:space:]]*ok [0-9]+' '^[[:space:]]*not ok [0-9]+'
+}
+
+# Records a pytest run from its closing line ("3 failed, 40 passed, 1 error in 9.1s"):
+# pytest_suite NAME LOG EXIT_STATUS. Errors count as failures, skipped tests as neither (the
+# suite's line says how many); a run that closed on no test or died counts as one failure.
+pytest_suite() {
+  local closing passed failed errors skipped name=$1
+  closing=$(grep -E '^=* *[0-9]+ (passed|failed|errors?|skipped)' "$2" | tail -n 1)
+  number_of() { grep -oE "[0-9]+ $1" <<<"$closing" | grep -oE '^[0-9]+' || echo 0; }
+  passed=$(number_of passed) failed=$(number_of failed) errors=$(number_of 'errors?')
+  skipped=$(number_of skipped)
+  failed=$((failed + errors))
+  [[ $3 -ne 0 && $failed -eq 0 ]] && failed=1
+  [[ $((passed + failed)) -eq 0 ]] && failed=1
+  [[ $skipped -gt 0 ]] && name="$1 ($skipped skipped)"
+  suite "$name" "$passed" "$failed"
 }
 
 # Records a suite from the lines of its log: line_suite NAME LOG EXIT_STATUS PASS_RE FAIL_RE.
@@ -149,6 +166,25 @@ tap_script "cancellation" cancel "$cluster_up" tests/cancel/cancel.sh
 
 banner "out of memory (prlimit on one backend)"
 tap_script "out of memory" oom "$cluster_up" tests/oom/out_of_memory.sh
+
+# --- the Python client, on the same cluster ---------------------------------------------------
+banner "python client (pytest)"
+# Debian's interpreter, which sees the python3-psycopg, -numpy and -pytest packages (another
+# python3 may come first on PATH).
+python=${ARG_PYTHON:-/usr/bin/python3}
+can_pytest=0
+if [[ $cluster_up -eq 1 ]] && "$python" -c 'import psycopg, numpy, pytest' &&
+  PGOPTIONS='-c client_min_messages=warning' psql -X -q -d postgres -v ON_ERROR_STOP=1 \
+    -c 'DROP DATABASE IF EXISTS arg_python' -c 'CREATE DATABASE arg_python'; then
+  can_pytest=1
+fi
+if [[ $can_pytest -eq 1 ]]; then
+  (cd clients/python && PGDATABASE=arg_python PYTHONDONTWRITEBYTECODE=1 \
+    timeout 900 "$python" -m pytest -p no:cacheprovider -q -rfE) 2>&1 | tee "$logs/pytest.log"
+  pytest_suite "python client (pytest)" "$logs/pytest.log" "${PIPESTATUS[0]}"
+else
+  suite "python client (pytest)" 0 1
+fi
 
 # --- the server survived everything above ---------------------------------------------------
 banner "server log"

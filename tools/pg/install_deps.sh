@@ -16,6 +16,8 @@ packages=(
   libspectra-dev
   # build and test tools
   cmake g++ make clang-format libgtest-dev libbenchmark-dev
+  # the Python client (clients/python) and its tests: Debian's packages, as PyPI is not used
+  python3-psycopg python3-numpy python3-pytest
   # libFuzzer targets and the sanitizer runtimes (tests/fuzz)
   clang libclang-rt-14-dev
 )
