@@ -117,15 +117,25 @@ double panorama_distance(const std::vector<float>& a, const std::vector<float>& 
   for (std::size_t f = 0; f < 2; ++f) {
     const std::size_t begin = f * kPanoramaPerFrame, wavelet = begin + kPanoramaFourier,
                       end = begin + kPanoramaPerFrame;
-    double l1 = 0, canberra = 0;
-    for (std::size_t k = begin; k < wavelet; ++k) l1 += std::fabs(double(a[k]) - double(b[k]));
+    // Four running sums, added up at the end: independent sums let the compiler use vector
+    // instructions (one sum is a chain of dependent additions); a fifth of a comparison.
+    auto four_lanes = [](std::size_t from, std::size_t to, auto&& term) {
+      double part[4] = {0, 0, 0, 0};
+      std::size_t k = from;
+      for (; k + 4 <= to; k += 4)
+        for (std::size_t q = 0; q < 4; ++q) part[q] += term(k + q);
+      for (; k < to; ++k) part[0] += term(k);
+      return (part[0] + part[1]) + (part[2] + part[3]);
+    };
+    const double l1 = four_lanes(
+        begin, wavelet, [&](std::size_t k) { return std::fabs(double(a[k]) - double(b[k])); });
     // Smooth views have near-zero detail statistics, whose plain Canberra ratio |x - y| / (x +
     // y) would only measure rounding noise: 0.01 in the denominator damps them (it also scores
     // better on all three benchmark sets than 0.001 or nothing).
-    for (std::size_t k = wavelet; k < end; ++k) {
+    const double canberra = four_lanes(wavelet, end, [&](std::size_t k) {
       const double x = a[k], y = b[k];
-      canberra += std::fabs(x - y) / (x + y + 0.01);  // both are >= 0
-    }
+      return std::fabs(x - y) / (x + y + 0.01);  // both are >= 0
+    });
     best = std::min(best, 0.5 * (std::min(1.0, l1 / 6.0) + canberra / kPanoramaWavelet));
   }
   return best;

@@ -2,7 +2,8 @@
 #include "match/mpair.hpp"
 
 #include <algorithm>
-#include <numeric>
+#include <array>
+#include <utility>
 
 #include "match/node_similarity.hpp"
 
@@ -15,30 +16,32 @@ struct Side {
   const ArgGraph* g = nullptr;
   std::vector<int> group;  // per node: match group, -1 when unmatched
   std::vector<int> label;  // per node: branch label at its level, 0 when none
+  // Per node: its only neighbour in the interval below (index 0) and above (1), -1 when it
+  // has none or several. Found once here, since branches are walked along them many times.
+  std::vector<std::array<int, 2>> only;
 
   void reset(const ArgGraph& graph) {
     g = &graph;
     group.assign(graph.nodes.size(), -1);
     label.assign(graph.nodes.size(), 0);
+    only.resize(graph.nodes.size());
+    for (std::size_t i = 0; i < graph.nodes.size(); ++i) {
+      const ArgNode& n = graph.nodes[i];
+      const std::uint32_t* adj = graph.adjacency.data() + n.adj_begin;
+      int found[2] = {-1, -1}, count[2] = {0, 0};
+      for (std::uint32_t k = 0; k < n.adj_count; ++k) {
+        const int side = adj[k] > i ? 1 : 0;  // nodes of a level are sorted by interval
+        found[side] = int(adj[k]), ++count[side];
+      }
+      for (int side = 0; side < 2; ++side)
+        only[i][std::size_t(side)] = count[side] == 1 ? found[side] : -1;
+    }
   }
   const ArgNode& node(int i) const { return g->nodes[std::size_t(i)]; }
 
-  // Neighbours of node i whose interval is interval(i) + step (step = +1 or -1). Nodes of a
-  // level are sorted by interval, so the neighbours below have smaller indices than i and
-  // those above larger ones: the side of a neighbour is the sign of j - i.
-  template <class F>
-  void for_neighbours(int i, int step, F&& f) const {
-    const ArgNode& n = node(i);
-    const std::uint32_t* adj = g->adjacency.data() + n.adj_begin;
-    for (std::uint32_t k = 0; k < n.adj_count; ++k)
-      if ((int(adj[k]) > i) == (step > 0)) f(int(adj[k]));
-  }
-  // The neighbour on side `step` when there is exactly one, else -1.
-  int only_neighbour(int i, int step) const {
-    int found = -1, count = 0;
-    for_neighbours(i, step, [&](int j) { found = j, ++count; });
-    return count == 1 ? found : -1;
-  }
+  // The neighbour in the interval interval(i) + step (step = +1 or -1) when there is exactly
+  // one, else -1.
+  int only_neighbour(int i, int step) const { return only[std::size_t(i)][step > 0 ? 1 : 0]; }
 
   // Labels the branch through i: neighbours up and down while the chain does not fork.
   void label_branch(int i, int value) {
@@ -60,31 +63,38 @@ struct Side {
 
 // For Tung and Schmitt's rule: the distinct matched groups of the parents of a node's
 // neighbours below (side 0) and above (side 1). Parents are settled before a level starts,
-// so this is computed once per node and level. Up to four groups are kept per side.
+// so this is computed at most once per node and level. Up to four groups are kept per side.
 struct NeighbourParents {
   int group[2][4];
   int count[2];
 };
 
-void neighbour_parents(const Side& side, int begin, int end, std::vector<NeighbourParents>& out) {
-  out.resize(std::size_t(end - begin));
-  for (int i = begin; i < end; ++i) {
-    NeighbourParents& np = out[std::size_t(i - begin)];
-    np.count[0] = np.count[1] = 0;
-    const ArgNode& n = side.node(i);
-    const std::uint32_t* adj = side.g->adjacency.data() + n.adj_begin;
-    for (std::uint32_t k = 0; k < n.adj_count; ++k) {
-      const int j = int(adj[k]);
-      const int gp = side.parent_group(j);
-      if (gp < 0) continue;
-      const int up = j > i ? 1 : 0;  // nodes of a level are sorted by interval
-      int* list = np.group[up];
-      int& c = np.count[up];
-      bool seen = false;
-      for (int q = 0; q < c; ++q) seen |= list[q] == gp;
-      if (!seen && c < 4) list[c++] = gp;
-    }
+// Computed on first use (count[0] < 0 until then): most nodes never get past the cheaper
+// tests of `candidate`, and this was a fifth of a comparison when done for every node.
+const NeighbourParents& neighbour_parents(const Side& side, int begin, int i,
+                                          std::vector<NeighbourParents>& out) {
+  NeighbourParents& np = out[std::size_t(i - begin)];
+  if (np.count[0] >= 0) return np;
+  np.count[0] = np.count[1] = 0;
+  const ArgNode& n = side.node(i);
+  const std::uint32_t* adj = side.g->adjacency.data() + n.adj_begin;
+  for (std::uint32_t k = 0; k < n.adj_count; ++k) {
+    const int j = int(adj[k]);
+    const int gp = side.parent_group(j);
+    if (gp < 0) continue;
+    const int up = j > i ? 1 : 0;  // nodes of a level are sorted by interval
+    int* list = np.group[up];
+    int& c = np.count[up];
+    bool seen = false;
+    for (int q = 0; q < c; ++q) seen |= list[q] == gp;
+    if (!seen && c < 4) list[c++] = gp;
   }
+  return np;
+}
+
+void reset_neighbour_parents(int begin, int end, std::vector<NeighbourParents>& out) {
+  out.resize(std::size_t(end - begin));
+  for (NeighbourParents& np : out) np.count[0] = -1;
 }
 
 // Where the parents of the neighbours of m and of n on one side are matched, at least one
@@ -108,7 +118,7 @@ struct Founded {
 
 struct Scratch {
   Side x, y;
-  std::vector<int> order;
+  std::vector<std::pair<double, int>> order;
   std::vector<double> self;
   std::vector<int> y_interval_begin;  // per interval of the current level: first Y node
   std::vector<NeighbourParents> x_parents, y_parents;  // per node of the current level
@@ -173,12 +183,11 @@ double match_graphs(const ArgGraph& gx, const ArgGraph& gy, const Weights& w,
     const int yb = int(gy.level_begin[std::size_t(r)]),
               ye = int(gy.level_begin[std::size_t(r) + 1]);
     const int first_group = int(s.groups.size());
+    // X's nodes by decreasing own sim, ties by index: sorted as (-sim, index) pairs, which
+    // keeps the keys beside each other in memory.
     s.order.resize(std::size_t(xe - xb));
-    std::iota(s.order.begin(), s.order.end(), xb);
-    std::sort(s.order.begin(), s.order.end(), [&](int a, int b) {
-      double sa = s.self[std::size_t(a)], sb = s.self[std::size_t(b)];
-      return sa != sb ? sa > sb : a < b;
-    });
+    for (int m = xb; m < xe; ++m) s.order[std::size_t(m - xb)] = {-s.self[std::size_t(m)], m};
+    std::sort(s.order.begin(), s.order.end());
     // Where each interval's nodes start in Y's level (nodes are sorted by interval).
     const int intervals = 1 << r;
     s.y_interval_begin.assign(std::size_t(intervals) + 1, ye);
@@ -187,10 +196,11 @@ double match_graphs(const ArgGraph& gx, const ArgGraph& gy, const Weights& w,
       s.y_interval_begin[std::size_t(k)] =
           std::min(s.y_interval_begin[std::size_t(k)], s.y_interval_begin[std::size_t(k) + 1]);
     if (w.tung_rule) {
-      neighbour_parents(X, xb, xe, s.x_parents);
-      neighbour_parents(Y, yb, ye, s.y_parents);
+      reset_neighbour_parents(xb, xe, s.x_parents);
+      reset_neighbour_parents(yb, ye, s.y_parents);
     }
-    for (int m : s.order) {
+    for (const auto& entry : s.order) {
+      const int m = entry.second;
       const int pg = X.parent_group(m);
       if (pg == -1) continue;  // parent unmatched: the subtree stays unmatched
       const ArgNode& nm = gx.nodes[std::size_t(m)];
@@ -200,8 +210,8 @@ double match_graphs(const ArgGraph& gx, const ArgGraph& gy, const Weights& w,
       const int y_end = s.y_interval_begin[std::size_t(nm.interval) + 1];
       for (int n = s.y_interval_begin[nm.interval]; n < y_end; ++n) {
         if (!candidate(X, Y, m, n, pg)) continue;
-        if (w.tung_rule &&
-            !neighbours_agree(s.x_parents[std::size_t(m - xb)], s.y_parents[std::size_t(n - yb)]))
+        if (w.tung_rule && !neighbours_agree(neighbour_parents(X, xb, m, s.x_parents),
+                                             neighbour_parents(Y, yb, n, s.y_parents)))
           continue;
         const double loss = node_loss(nm, gy.nodes[std::size_t(n)], gx.levels(), w);
         if (best >= 0 && loss > best_loss) continue;
