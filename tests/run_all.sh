@@ -8,7 +8,8 @@
 #   cancel      tests/cancel/cancel.sh: statement_timeout and pg_cancel_backend stop long statements
 #   memory      tests/oom/out_of_memory.sh: a backend out of address space gets 53200 and goes on
 #   python      pytest on clients/python/tests: the psycopg client (Debian's python3, or $ARG_PYTHON)
-#   server log  no backend of the throwaway cluster died ("terminated by signal") during the above
+#   server log  no backend of the throwaway cluster died ("terminated by signal") during the above,
+#               read where tools/pg/cluster.sh log-path says the log is; and a test of that check
 #   shards      tests/scale/shards.sh: postgres_fdw, a coordinator and two shards (its own clusters)
 #   sanitizers  the unit tests again, built with ASan + UBSan in build-asan/
 #   fuzz        every libFuzzer target for FUZZ_SECONDS (default 20) seconds from the fixed seed
@@ -114,10 +115,15 @@ banner "throwaway cluster"
 trap 'tools/pg/cluster.sh stop "$pgdir" --remove' EXIT
 trap 'exit 130' INT TERM HUP
 cluster_up=0
+# A line this run writes into its server's log, which the server-log check looks for: proof
+# that the log it reads is the running server's, not a copy an earlier run left.
+run_marker="arg run_all $(date -u +%Y%m%dT%H%M%S) $$ $RANDOM"
 if tools/pg/cluster.sh start "$pgdir" --fresh; then
   # shellcheck disable=SC1091
   source "$pgdir/env"
   cluster_up=1
+  psql -X -q -d postgres -c "DO \$\$BEGIN RAISE LOG '%', '$run_marker'; END\$\$" ||
+    echo "could not write the marker into the server log: the server-log check will fail"
 fi
 
 # --- pg_regress -----------------------------------------------------------------------------
@@ -188,14 +194,20 @@ fi
 
 # --- the server survived everything above ---------------------------------------------------
 banner "server log"
-if [[ $cluster_up -eq 1 && -f "$pgdir/postgres.log" ]]; then
-  crashes=$(grep -cE 'terminated by signal|server process .* was terminated|PANIC:' "$pgdir/postgres.log")
-  echo "server log: $crashes backend crashes ($pgdir/postgres.log)"
-  grep -E 'terminated by signal|server process .* was terminated|PANIC:' "$pgdir/postgres.log" | head -n 5
-  if [[ $crashes -eq 0 ]]; then suite "server log: no crash" 1 0; else suite "server log: no crash" 0 1; fi
+# The log is where the cluster keeps it: in DIR, or in /tmp beside a data directory the
+# postgres user can reach (a checkout under a 0700 home); cluster.sh says which, or why none.
+if [[ $cluster_up -eq 1 ]]; then
+  server_log=$(tools/pg/cluster.sh log-path "$pgdir")
+  if tests/server_log/check.sh "$server_log" "$run_marker"; then
+    suite "server log: no crash" 1 0
+  else
+    suite "server log: no crash" 0 1
+  fi
 else
+  echo "server log: the cluster did not start, so there is no log to check"
   suite "server log: no crash" 0 1
 fi
+tap_script "server log check (self-test)" server_log_check 1 tests/server_log/check_test.sh
 
 # Stop the cluster before the summary so that the summary stays the last line.
 tools/pg/cluster.sh stop "$pgdir" --remove || suite "cluster shutdown" 0 1

@@ -2,10 +2,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <system_error>
-#include <thread>
 
-#include "common/signals_blocked.hpp"
+#include "common/parallel_for.hpp"
 #include "mu/dijkstra.hpp"
 #include "mu/mu_function.hpp"
 #include "mu/surface_graph.hpp"
@@ -84,41 +82,9 @@ std::vector<double> geodesic_integral(const Mesh& mesh, const MeshEdges& edges, 
   for (auto& s : scratch) prepare_buckets(graph, s);
   for (std::size_t start = 0; start < base.size(); start += std::size_t(block)) {
     const int here = int(std::min<std::size_t>(std::size_t(block), base.size() - start));
-    auto run = [&](int k) {
-      shortest_paths_quantised(graph, base[start + std::size_t(k)], buffers[std::size_t(k)],
-                               scratch[std::size_t(k)], stop);
-    };
-    if (here == 1 || workers == 1) {
-      for (int k = 0; k < here; ++k) run(k);
-    } else {
-      std::vector<std::exception_ptr> errors(static_cast<std::size_t>(here));
-      auto run_keeping_error = [&](int k) {
-        try {
-          run(k);
-        } catch (...) {
-          errors[std::size_t(k)] = std::current_exception();
-        }
-      };
-      std::vector<std::thread> pool;
-      pool.reserve(std::size_t(here));
-      std::vector<int> not_started;
-      {
-        const SignalsBlocked while_starting;  // the workers keep this mask, this thread not
-        for (int k = 0; k < here; ++k) {
-          // A thread that cannot start (out of memory or of processes) leaves its work to this
-          // one: a throw here would destroy joinable threads, which terminates the process.
-          try {
-            pool.emplace_back(run_keeping_error, k);
-          } catch (const std::system_error&) {
-            not_started.push_back(k);
-          }
-        }
-      }
-      for (const int k : not_started) run_keeping_error(k);
-      for (auto& t : pool) t.join();
-      for (auto& e : errors)
-        if (e) std::rethrow_exception(e);
-    }
+    parallel_for(std::size_t(here), workers, [&](std::size_t k) {
+      shortest_paths_quantised(graph, base[start + k], buffers[k], scratch[k], stop);
+    });
     for (int k = 0; k < here; ++k) {
       const double s = weight[start + std::size_t(k)];
       const std::vector<float>& d = buffers[k];

@@ -145,8 +145,11 @@ invalid=$(q -d "$db" -c "SELECT count(*) FROM objects
 result "$([[ $invalid == 0 ]] && echo 1)" \
   "every row holds a valid arg equal to a fresh build of its mesh ($invalid bad rows)"
 
-crashes=$(grep -cE 'terminated by signal|PANIC:' "$pgdir/postgres.log")
-result "$([[ $crashes -eq 0 ]] && echo 1)" "the server log shows no crashed backend ($crashes)"
+# The log is where cluster.sh keeps it (in /tmp when the checkout is under a 0700 home).
+server_log=$(tools/pg/cluster.sh log-path "$pgdir")
+log_check=$(tests/server_log/check.sh "$server_log" 2>&1)
+log_rc=$?
+result "$([[ $log_rc -eq 0 ]] && echo 1)" "the server log shows no crashed backend: ${log_check%%$'\n'*}"
 
 # Memory: RssAnon per backend at each minute. Eight backends sharing two cores run only a few
 # hundred transactions each in ten minutes, so their caches (catalogue, plans, allocator arenas)

@@ -12,7 +12,6 @@
 // models spread over the file (default 20) query all the others.
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -23,6 +22,7 @@
 #include <thread>
 #include <vector>
 
+#include "common/parallel_for.hpp"
 #include "graph/search_descriptor.hpp"
 #include "graph/serialize.hpp"
 #include "match/mpair.hpp"
@@ -97,19 +97,6 @@ std::vector<std::string> split_tabs(const std::string& line) {
   return f;
 }
 
-template <class Work>
-void parallel_for(std::size_t n, Work&& work) {
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    for (std::size_t i = next++; i < n; i = next++) work(i);
-  };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < std::max(1u, std::thread::hardware_concurrency()); ++t)
-    pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -144,7 +131,8 @@ int main(int argc, char** argv) {
   std::fprintf(stderr, "%zu models, %zu queries; SIM of each query with every model...\n", n, nq);
   // sim[i * n + j]: SIM of query qs[i] and model j.
   std::vector<float> sim(nq * n, 0.0f);
-  parallel_for(nq * n, [&](std::size_t k) {
+  const int threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  arg::parallel_for(nq * n, threads, [&](std::size_t k) {
     const std::size_t i = k / n, j = k % n;
     if (qs[i] != j) sim[k] = float(arg::arg_similarity(models[qs[i]].g, models[j].g, w));
   });

@@ -8,7 +8,6 @@
 // and period are drawn per row from a stream seeded by --seed and the id, so a filter such as
 // museum = 'M7' keeps about 1/n of the rows. The same arguments give the same bytes.
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -21,6 +20,7 @@
 #include <vector>
 
 #include "command_registry.hpp"
+#include "common/parallel_for.hpp"
 #include "eval/label_file.hpp"
 #include "eval_models.hpp"
 #include "gen/generate_models.hpp"
@@ -108,30 +108,24 @@ int run_scale_gen(ScaleArgs& a) {
     const long long end = std::min(a.count, begin + chunk);
     rows.assign(std::size_t(end - begin), std::string());
     std::vector<std::string> errors(rows.size());
-    std::atomic<long long> next{begin};
-    auto worker = [&] {
-      for (long long i = next++; i < end; i = next++) {
-        std::string& row = rows[std::size_t(i - begin)];
-        try {
-          if (a.labels.empty()) {
-            row = generated_row(a, classes, i);
-          } else {
-            const arg::LabelledModel& m = set.models[std::size_t(i)];
-            argtool::Model model;
-            argtool::prepare_model(model, (root / m.path).string(), a.options, a.cache, true);
-            if (!model.error.empty()) throw std::runtime_error(model.error);
-            row = metadata(a, std::stoll(m.id)) + m.label + '\t' +
-                  arg::arg_to_text(arg::serialize_arg(model.graph)) + '\n';
-          }
-        } catch (const std::exception& e) {
-          errors[std::size_t(i - begin)] = e.what();
+    // A model that fails is reported and skipped: its error goes to its slot, not up.
+    arg::parallel_for(rows.size(), a.threads, [&](std::size_t k) {
+      const long long i = begin + (long long)k;
+      try {
+        if (a.labels.empty()) {
+          rows[k] = generated_row(a, classes, i);
+        } else {
+          const arg::LabelledModel& m = set.models[std::size_t(i)];
+          argtool::Model model;
+          argtool::prepare_model(model, (root / m.path).string(), a.options, a.cache, true);
+          if (!model.error.empty()) throw std::runtime_error(model.error);
+          rows[k] = metadata(a, std::stoll(m.id)) + m.label + '\t' +
+                    arg::arg_to_text(arg::serialize_arg(model.graph)) + '\n';
         }
+      } catch (const std::exception& e) {
+        errors[k] = e.what();
       }
-    };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < a.threads; ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool) t.join();
+    });
     for (std::size_t k = 0; k < rows.size(); ++k) {
       if (!errors[k].empty()) {
         std::fprintf(stderr, "\nmodel %lld skipped: %s\n", begin + (long long)k, errors[k].c_str());

@@ -1,6 +1,5 @@
 // argtool tune: learn the weights on some models or sets, report the scores on the ones held out.
 #include <algorithm>
-#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -9,6 +8,7 @@
 #include <thread>
 
 #include "command_registry.hpp"
+#include "common/parallel_for.hpp"
 #include "eval/label_file.hpp"
 #include "eval/retrieval_metrics.hpp"
 #include "eval/weight_search.hpp"
@@ -60,20 +60,15 @@ class GraphCache {
     const auto& models = sets_[set].models;
     const std::size_t n = members.size();
     std::vector<double> d(n * n, 0.0);
-    std::atomic<std::size_t> next{0};
-    auto worker = [&] {
-      for (std::size_t i = next++; i < n; i = next++)
-        for (std::size_t j = i + 1; j < n; ++j) {
-          const auto& a = models[std::size_t(members[i])];
-          const auto& b = models[std::size_t(members[j])];
-          if (a.error.empty() && b.error.empty())
-            d[i * n + j] = d[j * n + i] = arg::graph_similarity(a.graph, b.graph, key_weights);
-        }
-    };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads_; ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool) t.join();
+    // Row i writes the pairs (i, j > i) and their mirrors, slots no other row writes.
+    arg::parallel_for(n, threads_, [&](std::size_t i) {
+      for (std::size_t j = i + 1; j < n; ++j) {
+        const auto& a = models[std::size_t(members[i])];
+        const auto& b = models[std::size_t(members[j])];
+        if (a.error.empty() && b.error.empty())
+          d[i * n + j] = d[j * n + i] = arg::graph_similarity(a.graph, b.graph, key_weights);
+      }
+    });
     return cache_[key] = std::move(d);
   }
 

@@ -4,18 +4,26 @@
 #   tools/pg/cluster.sh start DIR [--fresh]   init (once, or anew with --fresh) and start on a free port
 #   tools/pg/cluster.sh stop DIR [--remove]   stop it (and delete its data); safe to call twice
 #   tools/pg/cluster.sh status DIR            exit 0 when it is running
+#   tools/pg/cluster.sh log-path DIR          print where its server log is (fails when none is)
 #
 # DIR/env holds PGHOST, PGPORT, PGUSER for clients (source it). The server listens on localhost
 # only, has no Unix socket, and trusts local TCP connections: it is for tests and the demo, never
 # for data anyone keeps. initdb and postgres refuse to run as root, so as root the cluster runs as
 # the `postgres` system user (created by the postgresql-15 package); when that user cannot reach
 # DIR (say the checkout is under /root), the data directory lives in /tmp and DIR/data links to it.
+# The server log (postgres.log) is beside the data directory, so in /tmp too while the cluster
+# exists: read it through `log-path`. A fresh cluster starts a fresh log; `stop --remove` keeps a
+# copy of the last one in DIR.
 set -euo pipefail
 
-usage() { echo "usage: $0 start DIR [--fresh] | stop DIR [--remove] | status DIR" >&2; exit 2; }
+usage() {
+  echo "usage: $0 start DIR [--fresh] | stop DIR [--remove] | status DIR | log-path DIR" >&2
+  exit 2
+}
 [[ $# -ge 2 ]] || usage
 action=$1
 if [[ "$action" == start ]]; then mkdir -p "$2"; elif [[ ! -d "$2" ]]; then
+  [[ "$action" == log-path ]] && echo "cluster: no cluster in $2 (no such folder), so no server log" >&2
   [[ "$action" == stop ]] && exit 0 || exit 1
 fi
 dir=$(cd "$2" && pwd -P)
@@ -76,6 +84,9 @@ init_cluster() {
     fi
   fi
   rm -rf "$dir/data"
+  # pg_ctl appends to its log: without this, a crash of an earlier cluster would stay in it, and
+  # a copy left in DIR by `stop --remove` would be taken for the new cluster's log.
+  rm -f "$dir/postgres.log" "$root/postgres.log"
   [[ "$root" == "$dir" ]] || ln -s "$root/data" "$dir/data"
   as_owner "$bindir/initdb" -D "$root/data" -U postgres --auth=trust --no-locale --encoding=UTF8 \
     --no-sync >"$dir/initdb.log" 2>&1 || { cat "$dir/initdb.log" >&2; exit 1; }
@@ -150,9 +161,27 @@ stop() {
   echo "cluster: stopped ($dir)"
 }
 
+# The log the server of DIR writes (pg_ctl -l in start): beside the data directory, wherever
+# that is. Fails, saying where it looked, when there is no such file.
+log_path() {
+  local data log
+  data=$(data_dir) || data=""
+  if [[ -z "$data" ]]; then
+    echo "cluster: the data directory of $dir is gone ($dir/data links nowhere), so no server log" >&2
+    exit 1
+  fi
+  log=$(dirname "$data")/postgres.log
+  if [[ ! -f "$log" ]]; then
+    echo "cluster: no server log at $log (the cluster in $dir was never started, or was removed)" >&2
+    exit 1
+  fi
+  echo "$log"
+}
+
 case "$action" in
   start) start ;;
   stop) stop ;;
   status) is_running ;;
+  log-path) log_path ;;
   *) usage ;;
 esac
