@@ -9,20 +9,39 @@ Mesh taubin_smoothing(const Mesh& mesh, const MeshEdges& edges, int iterations, 
                       double mu) {
   Mesh out = mesh;
   const Eigen::Index n = mesh.V.rows();
-  std::vector<int> degree(std::size_t(n), 0);
+  // Each vertex's neighbours in increasing order (compressed rows): a pass then reads its
+  // neighbours and writes one row, instead of scattering every edge into two sums, and adds
+  // them in the order the edge list (sorted by (v0, v1)) gave.
+  std::vector<int> begin(std::size_t(n) + 1, 0);
   for (int e = 0; e < edges.count(); ++e)
-    ++degree[std::size_t(edges.v0[e])], ++degree[std::size_t(edges.v1[e])];
-  Vertices sum(n, 3);
+    ++begin[std::size_t(edges.v0[e]) + 1], ++begin[std::size_t(edges.v1[e]) + 1];
+  for (Eigen::Index v = 0; v < n; ++v) begin[std::size_t(v) + 1] += begin[std::size_t(v)];
+  std::vector<int> neighbour(std::size_t(begin.back())), fill(begin.begin(), begin.end() - 1);
+  for (int e = 0; e < edges.count(); ++e) {  // sorted edges: lower neighbours come first
+    neighbour[std::size_t(fill[std::size_t(edges.v1[e])]++)] = edges.v0[e];
+  }
+  for (int e = 0; e < edges.count(); ++e)
+    neighbour[std::size_t(fill[std::size_t(edges.v0[e])]++)] = edges.v1[e];
+  Vertices next(n, 3);
   for (int it = 0; it < 2 * iterations; ++it) {
     const double step = it % 2 == 0 ? lambda : mu;
-    sum.setZero();
-    for (int e = 0; e < edges.count(); ++e) {
-      sum.row(edges.v0[e]) += out.V.row(edges.v1[e]);
-      sum.row(edges.v1[e]) += out.V.row(edges.v0[e]);
+    for (Eigen::Index v = 0; v < n; ++v) {
+      const int b = begin[std::size_t(v)], e = begin[std::size_t(v) + 1];
+      if (b == e) {
+        next.row(v) = out.V.row(v);
+        continue;
+      }
+      double x = 0, y = 0, z = 0;
+      for (int k = b; k < e; ++k) {
+        const int u = neighbour[std::size_t(k)];
+        x += out.V(u, 0), y += out.V(u, 1), z += out.V(u, 2);
+      }
+      const double d = e - b;
+      next(v, 0) = out.V(v, 0) + step * (x / d - out.V(v, 0));
+      next(v, 1) = out.V(v, 1) + step * (y / d - out.V(v, 1));
+      next(v, 2) = out.V(v, 2) + step * (z / d - out.V(v, 2));
     }
-    for (Eigen::Index v = 0; v < n; ++v)
-      if (degree[std::size_t(v)] > 0)
-        out.V.row(v) += step * (sum.row(v) / degree[std::size_t(v)] - out.V.row(v));
+    out.V.swap(next);
   }
   return out;
 }
