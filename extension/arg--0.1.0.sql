@@ -157,7 +157,8 @@ CREATE TYPE arg_weights (
 COMMENT ON TYPE arg_weights IS
   'weights of matching and SIM: a preset (arg, mrg, graph, shape, colour) and/or key=value pairs '
   '(alpha_l beta_l gamma_l delta_l eps_l alpha_s beta_s lambda_1..lambda_4 graph panorama spectrum '
-  'norm tung groups)';
+  'graph_on_proxy norm tung groups, or the readable names loss_area loss_length loss_radius loss_theta '
+  'loss_phi area length volume cords curvature colour)';
 
 -- Building ----------------------------------------------------------------------------------
 

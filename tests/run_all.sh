@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # Runs every test suite and ends with one line "N passed, N failed" that adds them all up:
-#   unit        GoogleTest through CTest (the CMake build in $BUILD_DIR)
+#   unit        GoogleTest through CTest (the CMake build in $BUILD_DIR; test_reference.cpp:
+#               docs/REFERENCE.md covers every build option, weight key and preset)
 #   argtool     tests/argtool/cli.sh: fast start, images loaded on demand, progress in a log file
 #   regression  pg_regress on sql/ + expected/ (make installcheck)
-#   pgtap       pg_prove on tests/pgtap/*.sql
+#   pgtap       pg_prove on tests/pgtap/*.sql (04_reference.sql: docs/REFERENCE.md covers the SQL
+#               objects, settings and SQLSTATEs)
+#   reference   tests/reference/examples.sh: every example of docs/REFERENCE.md runs as it says
 #   round trips tests/sql_roundtrip.sh: pg_dump/pg_restore and COPY (FORMAT binary) of arg values
 #   cancel      tests/cancel/cancel.sh: statement_timeout and pg_cancel_backend stop long statements
 #   memory      tests/oom/out_of_memory.sh: a backend out of address space gets 53200 and goes on
@@ -164,6 +167,9 @@ fi
 tap_script "pgTAP tests (pg_prove)" pgtap "$can_prove" pg_prove --verbose -d arg_tap "${tap_files[@]}"
 
 # --- scripts that print TAP lines on the throwaway cluster -----------------------------------
+banner "reference examples (docs/REFERENCE.md)"
+tap_script "reference examples" reference "$cluster_up" tests/reference/examples.sh
+
 banner "round trips (pg_dump, COPY)"
 tap_script "round trips (pg_dump, COPY)" roundtrip "$cluster_up" tests/sql_roundtrip.sh
 

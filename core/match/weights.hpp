@@ -3,6 +3,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace arg {
 
@@ -39,14 +40,30 @@ struct Weights {
   bool groups = false;    // a node may match a group of nodes of its interval (Hilaga's MRG)
 };
 
-// "arg", "mrg", "shape" or "colour"; throws InputError for another name.
+// One key of the weights text. The parser finds keys in this list and nowhere else, so a key it
+// accepts cannot be missing from it (tests/unit/test_reference.cpp holds docs/REFERENCE.md to it).
+struct WeightKey {
+  std::string_view name;    // as written: a paper's symbol ("lambda_3") or its readable name
+  std::string_view symbol;  // the key it sets, as format_weights writes it ("lambda_3")
+  std::vector<std::string_view> words;  // a switch's values, off first ("l1", "l2"); a number: none
+};
+
+// Every key parse_weights accepts: the symbols in the order of format_weights, then the readable
+// names (curvature for lambda_3, loss_area for alpha_l, ...).
+const std::vector<WeightKey>& weight_keys();
+
+// Every preset name weights_preset accepts ("color" as well as "colour").
+const std::vector<std::string_view>& weight_presets();
+
+// "arg", "mrg", "graph", "shape" or "colour"; throws InputError for another name.
 Weights weights_preset(std::string_view name);
 
 // A preset name, or "key=value" pairs separated by spaces or commas, optionally after a preset
-// ("shape lambda_4=0.1"). Keys: alpha_l beta_l gamma_l delta_l eps_l alpha_s beta_s lambda_1..4
-// graph panorama spectrum graph_on_proxy norm=l1|l2 tung=on|off groups=on|off. Values finite
-// and >= 0 (graph_on_proxy at most 1), at least one sim weight and one of graph, panorama,
-// spectrum positive.
+// ("shape lambda_4=0.1"). Keys (weight_keys()): alpha_l beta_l gamma_l delta_l eps_l alpha_s
+// beta_s lambda_1..4 graph panorama spectrum graph_on_proxy norm=l1|l2 tung=on|off
+// groups=on|off, and readable names for the first eleven. Each weight at most once, under
+// either name. Values finite and >= 0 (graph_on_proxy at most 1), at least one sim weight and
+// one of graph, panorama, spectrum positive.
 Weights parse_weights(std::string_view text);
 
 // graph, panorama and spectrum are multiples of this in [0, 255 steps]: the SQL type keeps

@@ -1,81 +1,100 @@
 // Parsing and printing the options of an ARG build.
 #include "pipeline/build_options.hpp"
 
+#include <iterator>
+
 #include "common/errors.hpp"
 #include "common/key_values.hpp"
 
 namespace arg {
 
+namespace {
+
+constexpr const char* kWhat = "build options";
+constexpr const char* kMuNames[] = {"geodesic", "height", "centroid"};  // in MuKind's order
+constexpr const char* kSurfaceNames[] = {"auto", "mesh", "proxy"};      // in SurfaceKind's order
+constexpr const char* kHoleNames[] = {"keep", "fill"};                  // in HoleKind's order
+
+// A key: a number in [lo, hi] kept in `number`, or a choice of `words` that `choose` applies.
+struct Option {
+  const char* name;
+  int BuildOptions::*number;
+  long lo, hi;
+  const char* const* words;
+  int word_count;
+  void (*choose)(BuildOptions&, int);
+};
+constexpr Option kOptions[] = {
+    {"levels", &BuildOptions::levels, 1, kMaxLevels, nullptr, 0, nullptr},
+    {"mu", nullptr, 0, 0, kMuNames, int(std::size(kMuNames)),
+     [](BuildOptions& o, int i) { o.mu = MuKind(i); }},
+    {"base_points", &BuildOptions::base_points, 8, 4096, nullptr, 0, nullptr},
+    {"surface", nullptr, 0, 0, kSurfaceNames, int(std::size(kSurfaceNames)),
+     [](BuildOptions& o, int i) { o.surface = SurfaceKind(i); }},
+    {"proxy_resolution", &BuildOptions::proxy_resolution, 16, 256, nullptr, 0, nullptr},
+    {"holes", nullptr, 0, 0, kHoleNames, int(std::size(kHoleNames)),
+     [](BuildOptions& o, int i) { o.holes = HoleKind(i); }},
+    {"threads", &BuildOptions::threads, 1, 256, nullptr, 0, nullptr},
+};
+
+// "a, b or c"
+std::string either(const char* const* words, int count) {
+  std::string out;
+  for (int i = 0; i < count; ++i)
+    out += std::string(i == 0 ? "" : i + 1 == count ? " or " : ", ") + words[i];
+  return out;
+}
+
+}  // namespace
+
 const char* mu_kind_name(MuKind kind) {
-  switch (kind) {
-    case MuKind::Geodesic:
-      return "geodesic";
-    case MuKind::Height:
-      return "height";
-    case MuKind::Centroid:
-      return "centroid";
-  }
-  return "geodesic";
+  const int i = int(kind);
+  return i < int(std::size(kMuNames)) ? kMuNames[i] : kMuNames[0];
 }
 
 const char* surface_kind_name(SurfaceKind kind) {
-  switch (kind) {
-    case SurfaceKind::Auto:
-      return "auto";
-    case SurfaceKind::Mesh:
-      return "mesh";
-    case SurfaceKind::Proxy:
-      return "proxy";
-  }
-  return "auto";
+  const int i = int(kind);
+  return i < int(std::size(kSurfaceNames)) ? kSurfaceNames[i] : kSurfaceNames[0];
 }
 
 const char* hole_kind_name(HoleKind kind) {
-  return kind == HoleKind::Keep ? "keep" : "fill";
+  const int i = int(kind);
+  return i < int(std::size(kHoleNames)) ? kHoleNames[i] : kHoleNames[1];
+}
+
+const std::vector<BuildOptionKey>& build_option_keys() {
+  static const std::vector<BuildOptionKey> keys = [] {
+    std::vector<BuildOptionKey> k;
+    for (const Option& o : kOptions)
+      k.push_back({o.name, o.lo, o.hi, {o.words, o.words + o.word_count}});
+    return k;
+  }();
+  return keys;
 }
 
 BuildOptions parse_build_options(std::string_view text) {
-  static const char* what = "build options";
   BuildOptions options;
-  for (const auto& [key, value] : split_key_values(text, what)) {
-    if (key == "levels") {
-      options.levels = int(parse_integer(value, key, what, 1, kMaxLevels));
-    } else if (key == "mu") {
-      if (value == "geodesic")
-        options.mu = MuKind::Geodesic;
-      else if (value == "height")
-        options.mu = MuKind::Height;
-      else if (value == "centroid")
-        options.mu = MuKind::Centroid;
-      else
-        throw InputError("build options: mu=" + value + " (expected geodesic, height or centroid)");
-    } else if (key == "base_points") {
-      options.base_points = int(parse_integer(value, key, what, 8, 4096));
-    } else if (key == "surface") {
-      if (value == "auto")
-        options.surface = SurfaceKind::Auto;
-      else if (value == "mesh")
-        options.surface = SurfaceKind::Mesh;
-      else if (value == "proxy")
-        options.surface = SurfaceKind::Proxy;
-      else
-        throw InputError("build options: surface=" + value + " (expected auto, mesh or proxy)");
-    } else if (key == "proxy_resolution") {
-      options.proxy_resolution = int(parse_integer(value, key, what, 16, 256));
-    } else if (key == "holes") {
-      if (value == "fill")
-        options.holes = HoleKind::Fill;
-      else if (value == "keep")
-        options.holes = HoleKind::Keep;
-      else
-        throw InputError("build options: holes=" + value + " (expected fill or keep)");
-    } else if (key == "threads") {
-      options.threads = int(parse_integer(value, key, what, 1, 256));
-    } else {
-      throw InputError(
-          "build options: unknown key \"" + key +
-          "\" (expected levels, mu, base_points, surface, proxy_resolution, holes or threads)");
+  for (const auto& [key, value] : split_key_values(text, kWhat)) {
+    const Option* option = nullptr;
+    for (const Option& o : kOptions)
+      if (key == o.name) option = &o;
+    if (!option) {
+      const char* names[std::size(kOptions)];
+      for (std::size_t i = 0; i < std::size(kOptions); ++i) names[i] = kOptions[i].name;
+      throw InputError("build options: unknown key \"" + key + "\" (expected " +
+                       either(names, int(std::size(kOptions))) + ")");
     }
+    if (option->number) {
+      options.*option->number = int(parse_integer(value, key, kWhat, option->lo, option->hi));
+      continue;
+    }
+    int chosen = -1;
+    for (int i = 0; i < option->word_count; ++i)
+      if (value == option->words[i]) chosen = i;
+    if (chosen < 0)
+      throw InputError("build options: " + key + "=" + value + " (expected " +
+                       either(option->words, option->word_count) + ")");
+    option->choose(options, chosen);
   }
   return options;
 }

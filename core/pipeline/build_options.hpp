@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace arg {
 
@@ -30,6 +31,19 @@ struct BuildOptions {
 };
 
 inline constexpr int kMaxLevels = 7;
+
+// One key of the build options text. The parser finds keys in the same table as this list, so a
+// key it accepts cannot be missing from it (tests/unit/test_reference.cpp holds
+// docs/REFERENCE.md to it).
+struct BuildOptionKey {
+  std::string_view name;
+  long lo = 0, hi = 0;  // a number's range
+  // A choice's values, in the order of its enum; none for a number.
+  std::vector<std::string_view> words;
+};
+
+// Every key parse_build_options accepts, in the order of format_build_options (threads last).
+const std::vector<BuildOptionKey>& build_option_keys();
 
 // Parses "levels=5 mu=geodesic base_points=128 surface=auto proxy_resolution=48 holes=fill
 // threads=2" (any order, any subset; empty gives the defaults). Throws InputError naming the bad

@@ -635,6 +635,10 @@ def weights_seeds():
         ("preset_not_first", "alpha_s=1 mrg"), ("bad_norm", "norm=l3"),
         ("whitespace", " \t\r\n"), ("empty", ""), ("nine_digits", "alpha_l=0.300000012"),
         ("leading_plus", "alpha_l=+.5e-1"), ("long", "alpha_s=1 " * 420),
+        ("readable_names", "shape loss_area=0.3 loss_length=0.15 loss_radius=0.15 loss_theta=0.2 "
+                           "loss_phi=0.2 area=0.65 length=0.35 volume=0.3 cords=1 curvature=3 "
+                           "colour=1"),
+        ("name_and_symbol", "curvature=2 lambda_3=3"), ("twice", "color=1,colour=1"),
     ]:
         put(t, name, text)
 

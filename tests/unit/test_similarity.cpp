@@ -94,8 +94,8 @@ TEST(Similarity, AProxyGraphCountsItsShareGraphOnProxy) {
     EXPECT_NEAR(parts.sim, mean, 1e-12);
   }
   // With no share left for the graph, SIM is the views' distance alone.
-  EXPECT_NEAR(similarity_parts(g[0], proxy, w).sim,
-              similarity_parts(g[0], proxy, w).panorama, 1e-12);
+  EXPECT_NEAR(similarity_parts(g[0], proxy, w).sim, similarity_parts(g[0], proxy, w).panorama,
+              1e-12);
 }
 
 TEST(Weights, GraphOnProxyIsAShareOnTheMixingGrid) {
@@ -142,6 +142,85 @@ TEST(Weights, RejectBadTextWithAClearMessage) {
       message("alpha_s=0 beta_s=0 lambda_1=0 lambda_2=0 lambda_3=0 lambda_4=0").find("positive"),
       std::string::npos);
   EXPECT_NE(message("alpha_l=").find("malformed"), std::string::npos);
+}
+
+TEST(Weights, ReadableNamesSetTheSameWeightAsThePapersSymbols) {
+  // Written out here rather than read from weight_keys(), so a name moved to another weight
+  // fails this test.
+  const std::pair<const char*, float Weights::*> names[] = {
+      {"loss_area", &Weights::alpha_l},   {"loss_length", &Weights::beta_l},
+      {"loss_radius", &Weights::gamma_l}, {"loss_theta", &Weights::delta_l},
+      {"loss_phi", &Weights::eps_l},      {"area", &Weights::alpha_s},
+      {"length", &Weights::beta_s},       {"volume", &Weights::lambda_1},
+      {"cords", &Weights::lambda_2},      {"curvature", &Weights::lambda_3},
+      {"colour", &Weights::lambda_4},     {"color", &Weights::lambda_4},
+  };
+  for (const auto& [name, member] : names) {
+    const Weights w = parse_weights(std::string(name) + "=7.5");
+    EXPECT_FLOAT_EQ(w.*member, 7.5f) << name;
+    Weights expected = weights_preset("arg");
+    expected.*member = 7.5f;
+    EXPECT_EQ(w, expected) << name << " sets nothing else";
+  }
+  EXPECT_EQ(parse_weights("shape curvature=2"), parse_weights("shape lambda_3=2"));
+  // Every readable name in the list parses like its symbol.
+  int readable = 0;
+  for (const WeightKey& k : weight_keys())
+    if (k.name != k.symbol) {
+      ++readable;
+      EXPECT_TRUE(k.words.empty()) << k.name;
+      EXPECT_EQ(parse_weights(std::string(k.name) + "=0.5"),
+                parse_weights(std::string(k.symbol) + "=0.5"))
+          << k.name;
+    }
+  EXPECT_EQ(readable, 12);
+}
+
+TEST(Weights, TheCanonicalTextKeepsThePapersSymbols) {
+  const std::string text = format_weights(parse_weights("curvature=2 loss_phi=0.1 colour=0"));
+  EXPECT_EQ(text, format_weights(parse_weights("lambda_3=2 eps_l=0.1 lambda_4=0")));
+  EXPECT_NE(text.find("lambda_3=2 "), std::string::npos) << text;
+  for (const WeightKey& k : weight_keys()) {
+    if (k.name != k.symbol) {
+      EXPECT_EQ(text.find(std::string(k.name) + "="), std::string::npos) << k.name << ": " << text;
+    }
+  }
+  EXPECT_EQ(format_weights(weights_preset("arg")),
+            "alpha_l=0.3 beta_l=0.15 gamma_l=0.15 delta_l=0.2 eps_l=0.2 alpha_s=0.65 beta_s=0.35 "
+            "lambda_1=0.3 lambda_2=1 lambda_3=3 lambda_4=1 graph=1 panorama=2.5 spectrum=0.75 "
+            "graph_on_proxy=0.75 norm=l1 tung=on groups=off");
+}
+
+TEST(Weights, ABareWordIsAPresetAndKeyEqualsValueIsAWeight) {
+  EXPECT_EQ(parse_weights("colour"), weights_preset("colour"));
+  EXPECT_EQ(parse_weights("color"), weights_preset("colour"));
+  const Weights w = parse_weights("colour=2");
+  EXPECT_FLOAT_EQ(w.lambda_4, 2.0f);
+  EXPECT_FLOAT_EQ(w.lambda_3, weights_preset("arg").lambda_3);
+  EXPECT_FLOAT_EQ(parse_weights("colour colour=2").lambda_4, 2.0f);
+  EXPECT_EQ(parse_weights("graph"), weights_preset("graph"));
+  EXPECT_FLOAT_EQ(parse_weights("graph=2").panorama, weights_preset("arg").panorama);
+}
+
+TEST(Weights, AWeightGivenTwiceIsAnErrorThatNamesBothSpellings) {
+  auto message = [](const char* text) {
+    try {
+      parse_weights(text);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string both = message("curvature=2 lambda_3=3");
+  EXPECT_NE(both.find("curvature"), std::string::npos) << both;
+  EXPECT_NE(both.find("lambda_3"), std::string::npos) << both;
+  EXPECT_NE(message("lambda_3=3, curvature=3").find("both set lambda_3"), std::string::npos);
+  EXPECT_NE(message("colour=1 color=1").find("both set lambda_4"), std::string::npos);
+  EXPECT_NE(message("lambda_3=2 lambda_3=2").find("lambda_3 is given twice"), std::string::npos);
+  EXPECT_NE(message("norm=l1 norm=l2").find("norm is given twice"), std::string::npos);
+  EXPECT_NE(message("panorama=1 panorama=1").find("given twice"), std::string::npos);
+  // A preset, then a key: the key changes the preset's value, which is not a repetition.
+  EXPECT_FLOAT_EQ(parse_weights("mrg curvature=2").lambda_3, 2.0f);
 }
 
 TEST(PartMatching, AtTheFinestLevelSubGraphsWithoutChildrenCompare) {
