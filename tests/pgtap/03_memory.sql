@@ -4,8 +4,10 @@
 -- add tens of megabytes. The builds cycle through the same 30 models in the warm-up and after
 -- it: a first build of a larger model raises the heap's high-water mark, which is not a leak.
 -- The allocator keeps or returns a freed block of a few megabytes depending on what lies above
--- it, so resident memory swings by that much between two equal rounds: the baseline is the
--- highest reading of the warm-up's rounds, and a leak shows as growth past it.
+-- it, so resident memory swings by that much between two equal rounds, one way or the other.
+-- A leak raises every later reading, a swing only some: the test compares the lowest of three
+-- readings after the work with the highest of the warm-up's three, and allows 4 MB (swings of
+-- up to 3 MB were seen on loaded machines; one leaked query graph per ranking would be about 80 MB).
 BEGIN;
 CREATE EXTENSION IF NOT EXISTS arg CASCADE;
 SELECT plan(3);
@@ -35,22 +37,24 @@ BEGIN
   RETURN n;
 END $$;
 
-CREATE TEMP TABLE readings (kb bigint);
-CREATE FUNCTION pg_temp.warm_up(rounds int) RETURNS bigint LANGUAGE plpgsql AS $$
+CREATE TEMP TABLE readings (n serial, kb bigint);
+CREATE FUNCTION pg_temp.three_rounds(rounds int) RETURNS bigint LANGUAGE plpgsql AS $$
 DECLARE n bigint := 0;
 BEGIN
   FOR i IN 1 .. 3 LOOP
     n := n + pg_temp.work(rounds);
-    INSERT INTO readings SELECT pg_temp.rss_anon_kb();
+    INSERT INTO readings (kb) SELECT pg_temp.rss_anon_kb();
   END LOOP;
   RETURN n;
 END $$;
-SELECT cmp_ok(pg_temp.warm_up(300), '>', 0::bigint, 'warm-up: 3 x (300 rankings, 30 part matches and 30 builds)');
+SELECT cmp_ok(pg_temp.three_rounds(300), '>', 0::bigint, 'warm-up: 3 x (300 rankings, 30 part matches and 30 builds)');
 CREATE TEMP TABLE before AS SELECT max(kb) AS kb FROM readings;
-SELECT cmp_ok(pg_temp.work(1000), '>', 0::bigint, 'then 1,000 rankings, 100 part matches and 100 builds');
-SELECT cmp_ok(pg_temp.rss_anon_kb() - (SELECT kb FROM before), '<', 2048::bigint,
-              format('1,000 more rankings, 100 part matches and 100 builds: private memory %s kB -> %s kB',
-                     (SELECT kb FROM before), pg_temp.rss_anon_kb()));
+TRUNCATE readings;
+SELECT cmp_ok(pg_temp.three_rounds(400), '>', 0::bigint, 'then 3 x (400 rankings, 40 part matches and 40 builds)');
+SELECT cmp_ok((SELECT min(kb) FROM readings) - (SELECT kb FROM before), '<', 4096::bigint,
+              format('1,200 more rankings, 120 part matches and 120 builds: private memory %s kB -> %s kB (lowest of %s)',
+                     (SELECT kb FROM before), (SELECT min(kb) FROM readings),
+                     (SELECT string_agg(kb::text, ', ' ORDER BY n) FROM readings)));
 
 SELECT * FROM finish();
 ROLLBACK;
