@@ -71,40 +71,13 @@ void rank_row(const double* row, int n, int skip, const std::vector<bool>& valid
   });
 }
 
-}  // namespace
-
-RetrievalScores retrieval_scores(const std::vector<double>& distance, const std::vector<int>& label,
-                                 int classes, const std::vector<bool>& valid_in) {
-  const int n = int(label.size());
-  std::vector<bool> valid = valid_in.empty() ? std::vector<bool>(std::size_t(n), true) : valid_in;
-  std::vector<int> class_size(std::size_t(classes), 0);
-  for (int c : label) ++class_size[std::size_t(c)];
-  RetrievalScores out;
-  out.precision_at_recall.assign(kRecallPoints, 0.0);
-  out.ft_per_class.assign(std::size_t(classes), 0.0);
-  std::vector<int> queries_per_class(std::size_t(classes), 0);
-  std::vector<int> order;
-  int counted = 0;
-  for (int q = 0; q < n; ++q) {
-    const int c = label[std::size_t(q)];
-    const int relevant = class_size[std::size_t(c)] - 1;
-    if (relevant <= 0) continue;  // a class of one has nothing to find
-    ++counted;
-    ++queries_per_class[std::size_t(c)];
-    if (!valid[std::size_t(q)]) continue;
-    rank_row(distance.data() + std::size_t(q) * std::size_t(n), n, q, valid, order);
-    std::vector<char> hit(static_cast<std::size_t>(n));
-    for (int j = 0; j < n; ++j) hit[std::size_t(j)] = label[std::size_t(j)] == c && j != q;
-    add_query(out, order, hit, relevant, c);
-  }
-  finish(out, counted, queries_per_class);
-  return out;
-}
-
-RetrievalScores query_scores(const std::vector<double>& distance,
-                             const std::vector<int>& query_label, const std::vector<int>& label,
-                             int classes, const std::vector<bool>& query_valid_in,
-                             const std::vector<bool>& valid_in) {
+// Scores a row of `distance` (n entries, one per model of the set) per query. When the queries
+// are the set's own models, query q is model q: it is left out of its own ranking and of the
+// count of models its class holds.
+RetrievalScores score_rows(const std::vector<double>& distance, const std::vector<int>& query_label,
+                           const std::vector<int>& label, int classes,
+                           const std::vector<bool>& query_valid_in,
+                           const std::vector<bool>& valid_in, bool queries_are_the_set) {
   const int q_count = int(query_label.size()), n = int(label.size());
   const std::vector<bool> valid =
       valid_in.empty() ? std::vector<bool>(std::size_t(n), true) : valid_in;
@@ -120,18 +93,34 @@ RetrievalScores query_scores(const std::vector<double>& distance,
   int counted = 0;
   for (int q = 0; q < q_count; ++q) {
     const int c = query_label[std::size_t(q)];
-    const int relevant = c >= 0 && c < classes ? class_size[std::size_t(c)] : 0;
-    if (relevant <= 0) continue;
+    const int self = queries_are_the_set ? q : -1;
+    const int relevant =
+        c >= 0 && c < classes ? class_size[std::size_t(c)] - (self >= 0 ? 1 : 0) : 0;
+    if (relevant <= 0) continue;  // a class of one has nothing to find
     ++counted;
     ++queries_per_class[std::size_t(c)];
     if (!query_valid[std::size_t(q)]) continue;
-    rank_row(distance.data() + std::size_t(q) * std::size_t(n), n, -1, valid, order);
+    rank_row(distance.data() + std::size_t(q) * std::size_t(n), n, self, valid, order);
     std::vector<char> hit(static_cast<std::size_t>(n));
-    for (int j = 0; j < n; ++j) hit[std::size_t(j)] = label[std::size_t(j)] == c;
+    for (int j = 0; j < n; ++j) hit[std::size_t(j)] = label[std::size_t(j)] == c && j != self;
     add_query(out, order, hit, relevant, c);
   }
   finish(out, counted, queries_per_class);
   return out;
+}
+
+}  // namespace
+
+RetrievalScores retrieval_scores(const std::vector<double>& distance, const std::vector<int>& label,
+                                 int classes, const std::vector<bool>& valid) {
+  return score_rows(distance, label, label, classes, valid, valid, true);
+}
+
+RetrievalScores query_scores(const std::vector<double>& distance,
+                             const std::vector<int>& query_label, const std::vector<int>& label,
+                             int classes, const std::vector<bool>& query_valid,
+                             const std::vector<bool>& valid) {
+  return score_rows(distance, query_label, label, classes, query_valid, valid, false);
 }
 
 }  // namespace arg

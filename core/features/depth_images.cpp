@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "features/triangle_pixels.hpp"
+
 namespace arg {
 
 DepthImages depth_images(const Mesh& mesh, int n) {
@@ -30,24 +32,13 @@ DepthImages depth_images(const Mesh& mesh, int n) {
         py[c] = (p[w] + h) / pixel - 0.5;
         pz[c] = p[a];
       }
-      const double area = (px[1] - px[0]) * (py[2] - py[0]) - (px[2] - px[0]) * (py[1] - py[0]);
-      if (area == 0) continue;  // seen edge-on: no pixel centre lies strictly inside
-      const int i0 = std::max(0, int(std::ceil(std::min({px[0], px[1], px[2]})))),
-                i1 = std::min(n - 1, int(std::floor(std::max({px[0], px[1], px[2]})))),
-                j0 = std::max(0, int(std::ceil(std::min({py[0], py[1], py[2]})))),
-                j1 = std::min(n - 1, int(std::floor(std::max({py[0], py[1], py[2]}))));
-      for (int j = j0; j <= j1; ++j)
-        for (int i = i0; i <= i1; ++i) {
-          // Barycentric coordinates of the pixel centre.
-          const double b0 = ((px[1] - i) * (py[2] - j) - (px[2] - i) * (py[1] - j)) / area,
-                       b1 = ((px[2] - i) * (py[0] - j) - (px[0] - i) * (py[2] - j)) / area,
-                       b2 = 1.0 - b0 - b1;
-          if (b0 < 0 || b1 < 0 || b2 < 0) continue;
-          const double z = b0 * pz[0] + b1 * pz[1] + b2 * pz[2];
-          const std::size_t k = std::size_t(j) * std::size_t(n) + std::size_t(i);
-          near[k] = std::max(near[k], float(z));  // seen from +a
-          far[k] = std::max(far[k], float(-z));   // seen from -a
-        }
+      for_each_pixel_centre(
+          px, py, 0, n - 1, 0, n - 1, [&](int i, int j, double b0, double b1, double b2) {
+            const double z = b0 * pz[0] + b1 * pz[1] + b2 * pz[2];
+            const std::size_t k = std::size_t(j) * std::size_t(n) + std::size_t(i);
+            near[k] = std::max(near[k], float(z));  // seen from +a
+            far[k] = std::max(far[k], float(-z));   // seen from -a
+          });
     }
     for (std::size_t k = 0; k < near.size(); ++k) {
       if (near[k] == none) continue;

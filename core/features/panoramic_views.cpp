@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "features/triangle_pixels.hpp"
+
 namespace arg {
 
 namespace {
@@ -64,23 +66,12 @@ void rasterise(const Cylinder& c, const Corner (&k)[3], const Eigen::Vector3d& n
     for (const auto& part : parts) rasterise(c, part, normal, depth + 1);
     return;
   }
-  const double area = (px[1] - px[0]) * (py[2] - py[0]) - (px[2] - px[0]) * (py[1] - py[0]);
   bool drawn = false;
-  if (area != 0) {
-    const int i0 = int(std::ceil(std::min({px[0], px[1], px[2]}))),
-              i1 = int(std::floor(std::max({px[0], px[1], px[2]})));
-    const int j0 = std::max(0, int(std::ceil(std::min({py[0], py[1], py[2]})))),
-              j1 = std::min(c.height - 1, int(std::floor(std::max({py[0], py[1], py[2]}))));
-    for (int j = j0; j <= j1; ++j)
-      for (int i = i0; i <= i1; ++i) {
-        const double b0 = ((px[1] - i) * (py[2] - j) - (px[2] - i) * (py[1] - j)) / area,
-                     b1 = ((px[2] - i) * (py[0] - j) - (px[0] - i) * (py[2] - j)) / area,
-                     b2 = 1.0 - b0 - b1;
-        if (b0 < 0 || b1 < 0 || b2 < 0) continue;
-        put(c, i, j, b0 * k[0].p + b1 * k[1].p + b2 * k[2].p, normal);
-        drawn = true;
-      }
-  }
+  for_each_pixel_centre(px, py, INT_MIN, INT_MAX, 0, c.height - 1,
+                        [&](int i, int j, double b0, double b1, double b2) {
+                          put(c, i, j, b0 * k[0].p + b1 * k[1].p + b2 * k[2].p, normal);
+                          drawn = true;
+                        });
   // A triangle smaller than a pixel still marks the pixel under its centre (the mean of its
   // corners' pixel coordinates: near enough for so small a triangle, and no arc tangent).
   if (!drawn)

@@ -156,6 +156,11 @@ std::string matrix_path(const std::string& file, const std::string& set, const s
   return (p.parent_path() / (p.stem().string() + "." + set + "." + method + ext)).string();
 }
 
+// The PSB measures of one row of the table, as JSON.
+nlohmann::json scores_json(const arg::RetrievalScores& s) {
+  return {{"nn", s.nn}, {"ft", s.ft}, {"st", s.st}, {"e", s.e}, {"dcg", s.dcg}, {"map", s.map}};
+}
+
 // Builds (or reads from the cache) everything the methods need for each model of a set.
 std::vector<Model> prepare_models(const arg::LabelSet& set, const fs::path& root,
                                   const std::string& label, bool need_arg,
@@ -258,15 +263,10 @@ const bool registered = argtool::register_command(
                            {"models", models.size()},
                            {"classes", set.classes.size()},
                            {"failed", failed},
-                           {"nn", s.nn},
-                           {"ft", s.ft},
-                           {"st", s.st},
-                           {"e", s.e},
-                           {"dcg", s.dcg},
-                           {"map", s.map},
                            {"build_ms_median", r.build_ms_median},
                            {"sim_us_median", r.sim_us_median},
                            {"seconds", seconds}});
+            out.back().update(scores_json(s));
             nlohmann::json per_class;
             for (std::size_t c = 0; c < set.classes.size(); ++c)
               per_class[set.classes[c]] = s.ft_per_class[c];
@@ -301,13 +301,8 @@ const bool registered = argtool::register_command(
                              {"queries", query_name},
                              {"method", method},
                              {"models", queries.size()},
-                             {"failed", failed},
-                             {"nn", s.nn},
-                             {"ft", s.ft},
-                             {"st", s.st},
-                             {"e", s.e},
-                             {"dcg", s.dcg},
-                             {"map", s.map}});
+                             {"failed", failed}});
+              out.back().update(scores_json(s));
             }
           }
         }
