@@ -1,4 +1,4 @@
-// Tests of reading OFF: plain (through OpenMesh), COFF and binary OFF (our parser), bad input.
+// Tests of reading OFF (our parser): plain, COFF, binary OFF, comments, colours and bad input.
 #include <gtest/gtest.h>
 
 #include <chrono>

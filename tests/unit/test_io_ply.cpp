@@ -166,7 +166,7 @@ TEST(ReadPly, FloatVertexColours) {
   EXPECT_NEAR(mesh.C(0, 2), 1.0, 0.01);
 }
 
-TEST(ReadPly, LayoutsOpenMeshMisreadsGoToTheStrictParser) {
+TEST(ReadPly, LayoutsOpenMeshMisreadAreReadCorrectly) {
   PlyLayout layout;
   layout.encoding = "binary_little_endian";
   layout.count_type = "uint";  // OpenMesh refuses list lengths of type uint

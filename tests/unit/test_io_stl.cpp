@@ -1,4 +1,4 @@
-// Tests of reading STL: ASCII (our parser), binary (OpenMesh), binary headers saying "solid".
+// Tests of reading STL (our parser): ASCII, binary, binary headers saying "solid", welding.
 #include <gtest/gtest.h>
 
 #include <limits>
