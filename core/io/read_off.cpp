@@ -5,7 +5,7 @@
 // knows no '#' comments, reads a face colour in plain OFF as the next face, and stops without an
 // error when the last number ends the data. This parser reads one element per line, names the
 // line of every error, and rounds text coordinates to single precision: what OpenMesh stored for
-// plain OFF (the ARGs built from it keep their bytes) and what binary OFF, STL and PLY hold.
+// plain OFF (the ARGs built from it keep their bytes), and what binary OFF and STL hold.
 #include <cmath>
 #include <cstdint>
 #include <string>
