@@ -12,7 +12,10 @@ BUILD_DIR ?= build
 CMAKE ?= cmake
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release $(if $(CI),-DARG_WERROR=ON)
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
-CORE_LIB := $(BUILD_DIR)/libargcore.a
+# The method library, and the two layers the extension's arg_generate and arg_inspect need (the
+# model generator, the graph's SVG); never the evaluation library (core/libraries.cmake).
+CORE_LIB := $(BUILD_DIR)/libargmethod.a
+CORE_LIBS := $(BUILD_DIR)/libargrender.a $(BUILD_DIR)/libarggen.a $(CORE_LIB)
 PG_CONFIG ?= $(firstword $(wildcard /usr/lib/postgresql/15/bin/pg_config) $(shell command -v pg_config 2>/dev/null))
 SUDO := $(if $(filter 0,$(shell id -u)),,sudo)
 export BUILD_DIR
@@ -34,7 +37,8 @@ PG_CPPFLAGS = -Icore -I/usr/include/eigen3 -DARG_VERSION='"$(EXTVERSION)"' -D_US
 PG_CXXFLAGS = -std=c++17 -Wextra -Wno-unused-parameter -Wno-missing-field-initializers \
               $(if $(CI),-Werror)
 # OpenImageIO is not linked: arg_image.so (built by CMake) is loaded on the first texture.
-SHLIB_LINK = $(CORE_LIB) -lOpenMeshCore -lz -pthread -lstdc++
+# OpenMesh: the OBJ reader.
+SHLIB_LINK = $(CORE_LIBS) -lOpenMeshCore -lz -pthread -lstdc++
 IMAGE_LIB = $(BUILD_DIR)/arg_image$(DLSUFFIX)
 # OpenVDB is not linked either: arg_vdb.so is loaded on the first build that makes a proxy.
 VDB_LIB = $(BUILD_DIR)/arg_vdb$(DLSUFFIX)
@@ -61,10 +65,11 @@ $(BUILD_DIR)/CMakeCache.txt:
 # ARG_NO_CMAKE=1 (used for the sudo install step) takes the library as it is.
 ifneq ($(ARG_NO_CMAKE),1)
 $(CORE_LIB): FORCE | $(BUILD_DIR)/CMakeCache.txt
-	$(CMAKE) --build $(BUILD_DIR) --target argcore argimage argvdb -j $(JOBS)
+	$(CMAKE) --build $(BUILD_DIR) --target argmethod arggen argrender argimage argvdb -j $(JOBS)
 endif
+$(filter-out $(CORE_LIB),$(CORE_LIBS)): $(CORE_LIB) ;
 
-arg$(DLSUFFIX): $(CORE_LIB)
+arg$(DLSUFFIX): $(CORE_LIBS)
 
 install: install-plugins
 .PHONY: install-plugins

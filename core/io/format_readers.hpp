@@ -13,12 +13,10 @@ namespace arg::io {
 // Each reader fills `out` (whose format name prefixes every error) and the variant/warnings of
 // `report`; read_mesh does the triangulation, colouring and the rest of the report.
 void read_off(std::string_view bytes, SoupBuilder& out, ReadReport& report);
-void read_off_strict(std::string_view bytes, const OffHeader& header, SoupBuilder& out,
+void read_off_binary(std::string_view bytes, const OffHeader& header, SoupBuilder& out,
                      ReadReport& report);
 void read_obj(std::string_view bytes, SoupBuilder& out, ReadReport& report);
 void read_ply(std::string_view bytes, SoupBuilder& out, ReadReport& report);
-void read_ply_strict(std::string_view bytes, const PlyHeader& header, SoupBuilder& out,
-                     ReadReport& report);
 void read_stl(std::string_view bytes, SoupBuilder& out, ReadReport& report);
 void read_stl_ascii(std::string_view bytes, SoupBuilder& out, ReadReport& report);
 void read_glb(std::string_view bytes, SoupBuilder& out, ReadReport& report);

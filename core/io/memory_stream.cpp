@@ -20,9 +20,6 @@ MemoryStreamBuf::MemoryStreamBuf(std::vector<StreamPiece> pieces) {
   }
 }
 
-MemoryStreamBuf::MemoryStreamBuf(std::string_view bytes)
-    : MemoryStreamBuf(std::vector<StreamPiece>{StreamPiece{bytes, 0}}) {}
-
 void MemoryStreamBuf::enter(std::size_t piece, std::size_t offset_in_piece) {
   current_ = piece;
   // std::streambuf wants non-const pointers; the get area is never written through.
@@ -99,12 +96,6 @@ MemoryStreamBuf::pos_type MemoryStreamBuf::seekpos(pos_type pos, std::ios_base::
 std::size_t line_of_offset(std::string_view text, std::size_t offset) {
   offset = std::min(offset, text.size());
   return 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + offset, '\n'));
-}
-
-std::string describe_text_position(std::string_view text, std::size_t offset) {
-  if (offset == StreamPiece::npos) return "header";
-  if (offset >= text.size()) return "end of data";
-  return "line " + std::to_string(line_of_offset(text, offset));
 }
 
 }  // namespace arg::io

@@ -3,7 +3,6 @@
 
 #include <cstddef>
 #include <streambuf>
-#include <string>
 #include <string_view>
 #include <vector>
 
@@ -23,7 +22,6 @@ struct StreamPiece {
 class MemoryStreamBuf : public std::streambuf {
  public:
   explicit MemoryStreamBuf(std::vector<StreamPiece> pieces);
-  explicit MemoryStreamBuf(std::string_view bytes);
 
   // Offset of the next byte to be read, counted in the concatenated stream.
   std::size_t position() const;
@@ -50,8 +48,5 @@ class MemoryStreamBuf : public std::streambuf {
 
 // 1-based line number of byte `offset` of `text` (counting '\n').
 std::size_t line_of_offset(std::string_view text, std::size_t offset);
-
-// "line N" for a position in a text input, "end of data" past its end.
-std::string describe_text_position(std::string_view text, std::size_t offset);
 
 }  // namespace arg::io

@@ -65,8 +65,13 @@ double PlyBodyCursor::read(PlyType type) {
     const std::size_t at = pos_;
     const std::string_view t = token();
     double value = 0;
+    float single = 0;
     std::int64_t integer = 0;
-    const bool ok = ply_type_is_integer(type) ? parse_integer(t, integer) : parse_real(t, value);
+    // A float property is rounded once, from the decimal, as a binary body would store it.
+    const bool ok = ply_type_is_integer(type)  ? parse_integer(t, integer)
+                    : type == PlyType::Float32 ? parse_real(t, single)
+                                               : parse_real(t, value);
+    if (type == PlyType::Float32) value = single;
     if (!ok) {
       pos_ = at;
       token();  // re-read so that where() points at the token's line
@@ -172,46 +177,6 @@ void check_ply_declared_counts(std::string_view bytes, const PlyHeader& header, 
   if (const PlyElement* f = header.find("face"); f && f->count > out.limits().max_triangles) {
     out.fail_limit("header declares " + std::to_string(f->count) + " faces, more than " +
                    std::to_string(out.limits().max_triangles) + " triangles");
-  }
-}
-
-void check_ply_binary_layout(std::string_view bytes, const PlyHeader& header, std::string_view last,
-                             SoupBuilder& out) {
-  PlyBodyCursor cursor(bytes, header);
-  for (const PlyElement& e : header.elements) {
-    const std::size_t fixed = min_binary_size(e);
-    bool has_list = false;
-    for (const PlyProperty& p : e.properties) has_list |= p.is_list;
-    if (!has_list) {
-      if (e.count * fixed > cursor.remaining()) {
-        throw_input_error("PLY", "byte offset " + std::to_string(cursor.offset()),
-                          std::to_string(e.count) + " " + e.name + " elements of " +
-                              std::to_string(fixed) + " bytes run past the end of the data " +
-                              "(file truncated?)");
-      }
-      cursor.advance(e.count * fixed);
-    } else {
-      for (std::uint64_t i = 0; i < e.count; ++i) {
-        out.poll();
-        for (const PlyProperty& p : e.properties) {
-          if (!p.is_list) {
-            cursor.skip(p.type);
-            continue;
-          }
-          const std::size_t n = cursor.read_count(p.count_type, p.type);
-          if (e.name == "face" && n > out.limits().max_triangles + 2) {
-            out.fail_limit("face " + std::to_string(i) + " has " + std::to_string(n) +
-                           " corners, more than the triangle limit allows");
-          }
-          if (n * ply_type_size(p.type) > cursor.remaining()) {
-            cursor.fail(e.name + " " + std::to_string(i) + ": list of " + std::to_string(n) +
-                        " runs past the end of the data (file truncated?)");
-          }
-          cursor.advance(n * ply_type_size(p.type));
-        }
-      }
-    }
-    if (e.name == last) return;
   }
 }
 

@@ -44,10 +44,4 @@ class PlyBodyCursor {
 // the body has K bytes", or LimitError.
 void check_ply_declared_counts(std::string_view bytes, const PlyHeader& header, SoupBuilder& out);
 
-// Walks a binary body up to the end of the element `last` (all elements if empty): every list
-// length is read and bounds-checked, nothing is converted. Throws InputError naming the element
-// and byte offset where the data runs out, or LimitError for a face list longer than the limit.
-void check_ply_binary_layout(std::string_view bytes, const PlyHeader& header, std::string_view last,
-                             SoupBuilder& out);
-
 }  // namespace arg::io

@@ -1,4 +1,4 @@
-// The PLY header: a strict parser, its element layout, and a canonical rewrite for OpenMesh.
+// The PLY header: a strict parser and the element layout it declares.
 #include "io/ply_header.hpp"
 
 #include <limits>
@@ -161,22 +161,6 @@ PlyHeader parse_ply_header(std::string_view bytes) {
   }
   header.body_offset = lines.offset();
   return header;
-}
-
-std::string canonical_ply_header(const PlyHeader& header) {
-  std::string text = "ply\nformat ";
-  text += ply_encoding_name(header.encoding);
-  text += " 1.0\n";
-  for (const PlyElement& e : header.elements) {
-    text += "element " + e.name + " " + std::to_string(e.count) + "\n";
-    for (const PlyProperty& p : e.properties) {
-      text += "property ";
-      if (p.is_list) text += "list " + p.count_type_name + " ";
-      text += p.type_name + " " + p.name + "\n";
-    }
-  }
-  text += "end_header\n";
-  return text;
 }
 
 }  // namespace arg::io

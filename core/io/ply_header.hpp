@@ -1,4 +1,4 @@
-// The PLY header: a strict parser, its element layout, and a canonical rewrite for OpenMesh.
+// The PLY header: a strict parser and the element layout it declares.
 #pragma once
 
 #include <cstddef>
@@ -43,10 +43,5 @@ PlyHeader parse_ply_header(std::string_view bytes);
 std::size_t ply_type_size(PlyType type);
 bool ply_type_is_integer(PlyType type);
 const char* ply_encoding_name(PlyEncoding encoding);
-
-// The same header with comments and obj_info dropped, single spaces and '\n' line ends, as
-// OpenMesh's PLY reader expects (it finds the start of a binary body by counting 12 bytes from
-// the token before "end_header", which a comment line or a trailing space throws off).
-std::string canonical_ply_header(const PlyHeader& header);
 
 }  // namespace arg::io

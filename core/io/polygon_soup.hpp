@@ -46,7 +46,8 @@ class SoupBuilder {
   void set_immediate_index_check(bool on) { immediate_index_check_ = on; }
 
   int add_vertex(double x, double y, double z);
-  // A vertex whose coordinates follow through set_vertex (OpenMesh's PLY reader does that).
+  // A vertex whose coordinates follow through set_vertex (an OpenMesh importer gets the point
+  // later).
   int add_vertex_unset();
   void set_vertex(int v, double x, double y, double z);
   // Returns the face index, or -1 when the face has fewer than three corners and is skipped.

@@ -1,4 +1,9 @@
 // Reading Wavefront OBJ meshes through OpenMesh's reader, after a strict line-by-line check.
+//
+// OBJ has one parse path: OpenMesh's OBJ reader (Debian's libopenmesh), which handles what OBJ
+// files carry (polygons, negative indices, per-corner texture coordinates, "v x y z r g b"
+// colours). It skips what it cannot parse without an error, so scan_obj below reads every line
+// it would act on first and rejects the file, with a line number, before OpenMesh sees it.
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
@@ -158,8 +163,7 @@ void read_obj(std::string_view bytes, SoupBuilder& out, ReadReport& report) {
       scan.vertices > 0 && scan.coloured_vertices == scan.vertices && !scan.vc_lines;
   if (colours) options += OpenMesh::IO::Options::VertexColor;
   auto describe_failure = [&] { return "OBJ: " + where() + ": could not read the data"; };
-  const bool ok = run_openmesh_reader(OpenMeshReader::Obj, buffer, importer, options,
-                                      /*fail_on_bad_read=*/false, describe_failure);
+  const bool ok = run_openmesh_obj_reader(buffer, importer, options, describe_failure);
   out.set_locator({});
   if (!ok) throw_input_error("OBJ", "", "OpenMesh's reader rejected the data");
   if (out.soup().vertex_count() != scan.vertices) {

@@ -1,20 +1,23 @@
-// Reading STL meshes: binary STL through OpenMesh's reader (ASCII STL has its own parser).
+// Reading STL meshes, binary and ASCII, with parsers of our own (ASCII in read_stl_ascii.cpp).
+//
+// Not OpenMesh's reader: binary STL is 50-byte records that need no library, and OpenMesh welds
+// corners through a std::map whose comparison is meaningless for NaN (a NaN corner silently
+// became some other vertex); its ASCII reader is too loose (see read_stl_ascii.cpp). Both
+// encodings weld corners with StlWelder, in OpenMesh's order, so the meshes read are the same.
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <string>
 
 #include "io/format_readers.hpp"
-#include "io/memory_stream.hpp"
-#include "io/openmesh_reader.hpp"
-#include "io/soup_importer.hpp"
+#include "io/stl_welder.hpp"
 
 namespace arg::io {
 
 namespace {
 
-constexpr std::size_t kHeader = 84;
-constexpr std::size_t kRecord = 50;
+constexpr std::size_t kHeader = 84;  // 80 bytes of free text and the triangle count
+constexpr std::size_t kRecord = 50;  // normal, three corners (12 floats) and 2 attribute bytes
 
 std::uint32_t le32(const char* p) {
   const auto* b = reinterpret_cast<const unsigned char*>(p);
@@ -49,33 +52,28 @@ void read_stl(std::string_view bytes, SoupBuilder& out, ReadReport& report) {
     out.fail_limit("header declares " + std::to_string(triangles) + " triangles, more than " +
                    std::to_string(out.limits().max_triangles));
   }
-  // OpenMesh welds equal corners through a std::map whose comparison is meaningless for NaN (a
-  // NaN corner would silently become some other vertex), so check every number first.
+  std::size_t at = kHeader;
+  out.set_locator([&] { return "byte offset " + std::to_string(at); });
+  out.set_immediate_index_check(true);
+  StlWelder welder;
   for (std::size_t t = 0; t < triangles; ++t) {
     const char* record = bytes.data() + kHeader + kRecord * t;
-    for (int k = 3; k < 12; ++k) {
-      if (!std::isfinite(lef32(record + 4 * k))) {
-        throw_input_error(
-            "STL", "byte offset " + std::to_string(kHeader + kRecord * t + 4 * k),
-            "triangle " + std::to_string(t) + " has a coordinate that is not a finite number");
+    int corners[3];
+    for (int c = 0; c < 3; ++c) {
+      float p[3];
+      for (int k = 0; k < 3; ++k) {
+        at = kHeader + kRecord * t + 12 * std::size_t(c + 1) + 4 * std::size_t(k);
+        p[k] = lef32(record + 12 * (c + 1) + 4 * k);
+        if (!std::isfinite(p[k])) {
+          out.fail("triangle " + std::to_string(t) +
+                   " has a coordinate that is not a finite number");
+        }
       }
+      corners[c] = welder.vertex(out, p[0], p[1], p[2]);
     }
+    add_stl_triangle(out, corners);
   }
-  MemoryStreamBuf buffer(bytes);
-  out.set_locator([&] { return "byte offset " + std::to_string(buffer.position()); });
-  out.set_immediate_index_check(true);
-  SoupImporter importer(out);
-  OpenMesh::IO::Options options = OpenMesh::IO::Options::Binary;
-  auto describe_failure = [&] {
-    return "STL: byte offset " + std::to_string(buffer.position()) + ": unexpected end of data";
-  };
-  const bool ok = run_openmesh_reader(OpenMeshReader::Stl, buffer, importer, options,
-                                      /*fail_on_bad_read=*/true, describe_failure);
   out.set_locator({});
-  if (!ok) throw_input_error("STL", "", "OpenMesh's reader rejected the data");
-  // OpenMesh drops triangles whose corners weld into fewer than three vertices.
-  out.soup().faces_skipped += triangles - out.soup().faces_seen;
-  out.soup().faces_seen = triangles;
 }
 
 }  // namespace arg::io

@@ -1,4 +1,4 @@
-// An OpenMesh importer that records what a reader sees into a PolygonSoup, keeping every face.
+// An OpenMesh importer that records what the OBJ reader sees in a PolygonSoup, every face kept.
 #include "io/soup_importer.hpp"
 
 namespace arg::io {
@@ -67,13 +67,6 @@ void SoupImporter::set_color(OpenMesh::FaceHandle fh, const OpenMesh::Vec4f& c) 
 
 void SoupImporter::set_texcoord(OpenMesh::VertexHandle vh, const OpenMesh::Vec2f& t) {
   builder_.set_vertex_uv(vh.idx(), t[0], t[1]);
-}
-
-void SoupImporter::reserve(unsigned int vertices, unsigned int, unsigned int faces) {
-  saw_declaration_ = true;
-  declared_vertices_ = vertices;
-  declared_faces_ = faces;
-  if (on_declared_) on_declared_(vertices, faces);
 }
 
 }  // namespace arg::io

@@ -1,8 +1,7 @@
-// An OpenMesh importer that records what a reader sees into a PolygonSoup, keeping every face.
+// An OpenMesh importer that records what the OBJ reader sees in a PolygonSoup, every face kept.
 #pragma once
 
 #include <cstddef>
-#include <functional>
 
 #include <OpenMesh/Core/IO/importer/BaseImporter.hh>
 
@@ -11,18 +10,10 @@
 namespace arg::io {
 
 // OpenMesh's own PolyMesh importer drops faces that would make the mesh non-manifold; this one
-// keeps them all (the pipeline cleans meshes itself). It never allocates from declared counts:
-// reserve() only reports them to `on_declared`, which may throw.
+// keeps them all (the pipeline cleans meshes itself).
 class SoupImporter : public OpenMesh::IO::BaseImporter {
  public:
-  using Declared = std::function<void(std::size_t vertices, std::size_t faces)>;
-
   explicit SoupImporter(SoupBuilder& builder) : builder_(builder) {}
-
-  void on_declared(Declared callback) { on_declared_ = std::move(callback); }
-  std::size_t declared_vertices() const { return declared_vertices_; }
-  std::size_t declared_faces() const { return declared_faces_; }
-  bool saw_declaration() const { return saw_declaration_; }
 
   OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3f& p) override;
   OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3d& p) override;
@@ -70,8 +61,8 @@ class SoupImporter : public OpenMesh::IO::BaseImporter {
   void set_status(OpenMesh::FaceHandle, const OpenMesh::Attributes::StatusInfo&) override {}
   void add_texture_information(int, std::string) override {}
 
-  // Declared counts are untrusted: report them, allocate nothing.
-  void reserve(unsigned int vertices, unsigned int edges, unsigned int faces) override;
+  // Declared counts are untrusted: allocate nothing for them.
+  void reserve(unsigned int, unsigned int, unsigned int) override {}
 
   size_t n_vertices() const override { return builder_.soup().vertex_count(); }
   size_t n_faces() const override { return builder_.soup().face_count(); }
@@ -79,10 +70,6 @@ class SoupImporter : public OpenMesh::IO::BaseImporter {
 
  private:
   SoupBuilder& builder_;
-  Declared on_declared_;
-  std::size_t declared_vertices_ = 0;
-  std::size_t declared_faces_ = 0;
-  bool saw_declaration_ = false;
   std::vector<int> scratch_;
   std::vector<float> uv_scratch_;
 };

@@ -3,6 +3,7 @@
 
 #include <cctype>
 #include <charconv>
+#include <cmath>
 
 namespace arg::io {
 
@@ -65,6 +66,20 @@ bool parse_real(std::string_view token, double& value) {
   if (token.empty()) return false;
   const char* end = token.data() + token.size();
   const auto result = std::from_chars(token.data(), end, value);
+  return result.ec == std::errc() && result.ptr == end;
+}
+
+bool parse_real(std::string_view token, float& value) {
+  if (!token.empty() && token[0] == '+') token.remove_prefix(1);
+  if (token.empty()) return false;
+  const char* end = token.data() + token.size();
+  const auto result = std::from_chars(token.data(), end, value);
+  if (result.ec == std::errc::result_out_of_range && result.ptr == end) {
+    double wide = 0;
+    if (!parse_real(token, wide) || std::fabs(wide) >= 1.0) return false;
+    value = static_cast<float>(wide);
+    return true;
+  }
   return result.ec == std::errc() && result.ptr == end;
 }
 

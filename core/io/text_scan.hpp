@@ -36,6 +36,10 @@ std::size_t split_tokens(std::string_view line, std::vector<std::string_view>& t
 // Whole-token parses; a leading '+' is allowed. parse_real accepts "nan"/"inf" spellings, so
 // callers check std::isfinite where they need to.
 bool parse_real(std::string_view token, double& value);
+// Rounds the decimal straight to single precision (never through double, which can round a
+// halfway case differently); a value too small for a float becomes a signed zero, as strtof makes
+// it, and one too large fails.
+bool parse_real(std::string_view token, float& value);
 bool parse_integer(std::string_view token, std::int64_t& value);
 
 // Cuts `line` at a '#' comment and trims spaces.

@@ -7,11 +7,11 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 build=${BUILD_DIR:-build}
-[[ -f "$build/libargcore.a" ]] || { echo "build the core first (make build)" >&2; exit 1; }
+[[ -f "$build/libargmethod.a" ]] || { echo "build the core first (make build)" >&2; exit 1; }
 exe=$build/scale/descriptor_study
 mkdir -p "$build/scale"
-if [[ ! -x "$exe" || tests/scale/descriptor_study.cpp -nt "$exe" || "$build/libargcore.a" -nt "$exe" ]]; then
+if [[ ! -x "$exe" || tests/scale/descriptor_study.cpp -nt "$exe" || "$build/libargmethod.a" -nt "$exe" ]]; then
   g++ -std=c++17 -O2 -pthread -Icore -I/usr/include/eigen3 -D_USE_MATH_DEFINES \
-    tests/scale/descriptor_study.cpp "$build/libargcore.a" -lOpenMeshCore -o "$exe"
+    tests/scale/descriptor_study.cpp "$build/libargmethod.a" -lOpenMeshCore -o "$exe"
 fi
 "$exe" "$@"

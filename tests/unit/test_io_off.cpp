@@ -1,7 +1,8 @@
-// Tests of reading OFF: plain (through OpenMesh), COFF and binary OFF (our parser), bad input.
+// Tests of reading OFF (our parser): plain, COFF, binary OFF, comments, colours and bad input.
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <sstream>
 
 #include "common/errors.hpp"
@@ -96,6 +97,36 @@ TEST(ReadOff, FloatColoursAndFaceColours) {
   EXPECT_EQ(report.colour_source, "face");
   EXPECT_NEAR(mesh.C(0, 1), 1.0, 1e-6);
   EXPECT_NEAR(mesh.C(0, 0), 0.0, 1e-6);
+}
+
+TEST(ReadOff, AFaceColourOnALaterFaceOnlyIsAColourNotAFace) {
+  // OpenMesh's reader, told of no colours by the header, read "255 0 0" as the next face. The
+  // mesh has no colour: not every face has one.
+  ReadReport report;
+  const Mesh mesh =
+      read("OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3 255 0 0\n", &report);
+  EXPECT_EQ(mesh.F.rows(), 2);
+  EXPECT_EQ(report.faces_read, 2u);
+  EXPECT_FALSE(mesh.has_colour());
+}
+
+TEST(ReadOff, NumbersAfterAPlainOffVertexAreNoColour) {
+  // Vertex colours need the C of COFF (Geomview); a plain OFF writer's extra columns are not.
+  ReadReport report;
+  const Mesh mesh = read("OFF\n3 1 0\n0 0 0 9 9 9\n1 0 0 9 9 9\n0 1 0 9 9 9\n3 0 1 2\n", &report);
+  EXPECT_FALSE(mesh.has_colour());
+  EXPECT_EQ(report.colour_source, "none");
+}
+
+TEST(ReadOff, TextCoordinatesAreRoundedOnceToSinglePrecision) {
+  // This decimal rounds to a double exactly halfway between two floats, which then goes to the
+  // wrong one: the float must come from the decimal directly (strtof's, as OpenMesh stored it).
+  const Mesh mesh = read("OFF\n3 1 0\n-0.182252399623394 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(mesh.V(0, 0), double(std::strtof("-0.182252399623394", nullptr)));
+  EXPECT_NE(mesh.V(0, 0), double(float(-0.182252399623394)));
+  // Too small for a float is zero, as strtof makes it; too large is an error.
+  EXPECT_EQ(read("OFF\n3 1 0\n1e-50 0 0\n1 0 0\n0 1 0\n3 0 1 2\n").V(0, 0), 0.0);
+  EXPECT_NE(error_of("OFF\n3 1 0\n1e39 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"), "(no InputError)");
 }
 
 std::string binary_cube_off(bool big_endian) {

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <sstream>
 
@@ -166,7 +167,20 @@ TEST(ReadPly, FloatVertexColours) {
   EXPECT_NEAR(mesh.C(0, 2), 1.0, 0.01);
 }
 
-TEST(ReadPly, LayoutsOpenMeshMisreadsGoToTheStrictParser) {
+TEST(ReadPly, AsciiValuesAreRoundedToTheDeclaredType) {
+  // A float property is rounded once from the decimal, as a binary body stores it; a double one
+  // keeps double precision (OpenMesh rounded both to float).
+  const std::string head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty ";
+  const std::string tail =
+      " x\nproperty float y\nproperty float z\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n"
+      "-0.182252399623394 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  EXPECT_EQ(read_mesh(head + "float" + tail).V(0, 0),
+            double(std::strtof("-0.182252399623394", nullptr)));
+  EXPECT_EQ(read_mesh(head + "double" + tail).V(0, 0), -0.182252399623394);
+}
+
+TEST(ReadPly, LayoutsOpenMeshMisreadAreReadCorrectly) {
   PlyLayout layout;
   layout.encoding = "binary_little_endian";
   layout.count_type = "uint";  // OpenMesh refuses list lengths of type uint

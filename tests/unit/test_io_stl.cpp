@@ -1,6 +1,7 @@
-// Tests of reading STL: ASCII (our parser), binary (OpenMesh), binary headers saying "solid".
+// Tests of reading STL (our parser): ASCII, binary, binary headers saying "solid", welding.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <limits>
 #include <sstream>
 
@@ -65,6 +66,23 @@ TEST(ReadStl, AsciiAndBinaryReadTheOffCubeWithWeldedCorners) {
   EXPECT_EQ(mesh.V.rows(), 8);
   EXPECT_EQ(report.variant, "binary");
   EXPECT_EQ(report.faces_read, 12u);
+}
+
+TEST(ReadStl, AsciiCoordinatesAreRoundedOnceToSinglePrecisionAndWelded) {
+  // Rounded through double, the first corner would be one unit in the last place off (see
+  // ReadOff.TextCoordinatesAreRoundedOnceToSinglePrecision); the third equals the first.
+  ReadReport report;
+  const Mesh mesh = read_mesh(
+      "solid t\nfacet normal 0 0 0\nouter loop\nvertex -0.182252399623394 0 0\n"
+      "vertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nfacet normal 0 0 0\nouter loop\n"
+      "vertex 1 0 0\nvertex 1 0 0\nvertex -0.182252399623394 0 -0\nendloop\nendfacet\n"
+      "endsolid t\n",
+      {}, &report);
+  ASSERT_EQ(mesh.V.rows(), 3);
+  EXPECT_EQ(mesh.V(0, 0), double(std::strtof("-0.182252399623394", nullptr)));
+  EXPECT_EQ(mesh.F.rows(), 1);
+  EXPECT_EQ(report.faces_read, 2u);
+  EXPECT_EQ(report.faces_skipped, 1u);  // its corners welded into two vertices
 }
 
 TEST(ReadStl, ABinaryStlWhoseHeaderSaysSolidIsStillBinary) {
