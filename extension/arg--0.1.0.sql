@@ -155,10 +155,8 @@ CREATE TYPE arg_weights (
 );
 
 COMMENT ON TYPE arg_weights IS
-  'weights of matching and SIM: a preset (arg, mrg, graph, shape, colour) and/or key=value pairs '
-  '(alpha_l beta_l gamma_l delta_l eps_l alpha_s beta_s lambda_1..lambda_4 graph panorama spectrum '
-  'graph_on_proxy norm tung groups, or the readable names loss_area loss_length loss_radius loss_theta '
-  'loss_phi area length volume cords curvature colour)';
+  'weights of matching and SIM: a preset (arg, mrg, shape, colour) and/or key=value pairs '
+  '(alpha_l beta_l gamma_l delta_l eps_l alpha_s beta_s lambda_1..lambda_4 norm tung groups)';
 
 -- Building ----------------------------------------------------------------------------------
 
@@ -166,7 +164,7 @@ CREATE FUNCTION arg_build(mesh bytea, options text DEFAULT '') RETURNS arg
   AS 'MODULE_PATHNAME', 'arg_build_mesh' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 1000000;
 
 COMMENT ON FUNCTION arg_build(bytea, text) IS
-  'ARG of a mesh (OFF, OBJ, PLY, STL or GLB, detected); options like ''levels=5 mu=geodesic base_points=128 surface=auto''';
+  'ARG of a mesh (OFF, OBJ, PLY, STL or GLB, detected); options like ''levels=5 mu=geodesic base_points=128''';
 
 CREATE FUNCTION arg_build(mesh bytea, texture bytea, options text DEFAULT '') RETURNS arg
   AS 'MODULE_PATHNAME', 'arg_build_textured' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 1000000;

@@ -19,6 +19,15 @@ void raise_if_failed(const Outcome& out, int input_errcode, const char* context)
     case Failure::Input:
       ereport(ERROR, (errcode(input_errcode), errmsg("%s: %s", context, out.message)));
       break;
+    case Failure::Incomparable:
+      // Not the input's fault but how it was built: the hint says how to make it comparable.
+      ereport(ERROR,
+              (errcode(ERRCODE_INVALID_PARAMETER_VALUE), errmsg("%s: %s", context, out.message),
+               errdetail("ARGs compare only when one builder major and minor version made both "
+                         "with the same build options."),
+               errhint("Rebuild the values for which arg_rebuild_needed() is true, with the "
+                       "options of the others (docs/REFERENCE.md, \"Upgrading\").")));
+      break;
     case Failure::Limit:
       ereport(ERROR,
               (errcode(ERRCODE_PROGRAM_LIMIT_EXCEEDED), errmsg("%s: %s", context, out.message)));

@@ -34,7 +34,7 @@ extern "C" {
 
 namespace argpg {
 
-enum class Failure { None, Input, Limit, OutOfMemory, Interrupted, Internal };
+enum class Failure { None, Input, Incomparable, Limit, OutOfMemory, Interrupted, Internal };
 
 // What a guarded call left behind. Plain data (no destructor), so it may outlive the try and
 // still be alive when ereport longjmps.
@@ -53,6 +53,8 @@ Outcome guarded(Work&& work) noexcept {
     work();
   } catch (const arg::InputError& e) {
     record(out, Failure::Input, e.what());
+  } catch (const arg::Incomparable& e) {
+    record(out, Failure::Incomparable, e.what());
   } catch (const arg::LimitError& e) {
     record(out, Failure::Limit, e.what());
   } catch (const arg::Interrupted& e) {
@@ -68,8 +70,9 @@ Outcome guarded(Work&& work) noexcept {
 }
 
 // Raises the recorded error, if any: `input_errcode` (22P02, 22P03 or 22023) for bad input,
-// 54000 over a limit, 53200 out of memory, the cancel itself when interrupted, XX000 otherwise.
-// `context` starts the message ("invalid input syntax for type arg").
+// 22023 with a hint to rebuild for ARGs that cannot be compared, 54000 over a limit, 53200 out of
+// memory, the cancel itself when interrupted, XX000 otherwise. `context` starts the message
+// ("invalid input syntax for type arg").
 void raise_if_failed(const Outcome& out, int input_errcode, const char* context);
 
 // The core's stop callback: true once a query cancel or termination is pending.

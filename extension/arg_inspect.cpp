@@ -2,6 +2,7 @@
 // (one level's Reeb graph as a picture).
 #include <cstdlib>
 
+#include "graph/comparable.hpp"
 #include "graph/serialize.hpp"
 #include "render/graph_svg.hpp"
 
@@ -52,9 +53,6 @@ std::string describe(const arg::ArgGraph& g, std::size_t bytes) {
     per_level += (r ? ", " : "") +
                  std::to_string(g.level_begin[std::size_t(r) + 1] - g.level_begin[std::size_t(r)]);
   const arg::ArgSummary& s = g.summary;
-  const std::uint32_t v = g.builder_version;
-  const std::string builder = std::to_string(v / 10000) + "." + std::to_string(v / 100 % 100) +
-                              "." + std::to_string(v % 100);
   return "{\"levels\": " + std::to_string(g.levels()) +
          ", \"nodes\": " + std::to_string(g.nodes.size()) + ", \"nodes_per_level\": [" + per_level +
          "], \"edges\": " + std::to_string(g.adjacency.size() / 2) +
@@ -69,7 +67,7 @@ std::string describe(const arg::ArgGraph& g, std::size_t bytes) {
          ", \"proxy\": " + ((s.flags & arg::kFlagProxy) ? "true" : "false") +
          ", \"whole_shape\": " + (g.panorama.empty() ? "false" : "true") +
          ", \"options\": " + json_string(arg::format_build_options(g.options)) +
-         ", \"builder_version\": " + json_string(builder) +
+         ", \"builder_version\": " + json_string(arg::builder_version_text(g.builder_version)) +
          ", \"format_version\": " + std::to_string(g.format) +
          ", \"bytes\": " + std::to_string(bytes) + "}";
 }

@@ -1,5 +1,6 @@
 // Node-level results of matching: arg_matches (the pairs behind SIM) and arg_part_match (the
 // parts of a candidate that match one node of a query, paper section 5).
+#include "graph/comparable.hpp"
 #include "match/similarity.hpp"
 
 #include "arg_cache.hpp"
@@ -56,6 +57,7 @@ Datum arg_part_match(PG_FUNCTION_ARGS) {
     arg::ArgGraph scratch_q, scratch_c;
     const arg::ArgGraph& q = argpg::graph_of(cache, 0, query, scratch_q);
     const arg::ArgGraph& c = argpg::graph_of(cache, 1, candidate, scratch_c);
+    arg::require_comparable(q, c);
     const std::vector<arg::PartMatch> parts =
         arg::part_match(q, level, node, c, weights, 0.5, argpg::stop_requested);
     rows = copy_rows<PartRow, arg::PartMatch>(parts, [](const arg::PartMatch& p) {
@@ -89,6 +91,7 @@ Datum arg_matches(PG_FUNCTION_ARGS) {
     arg::ArgGraph scratch_a, scratch_b;
     const arg::ArgGraph& ga = argpg::graph_of(cache, 0, a, scratch_a);
     const arg::ArgGraph& gb = argpg::graph_of(cache, 1, b, scratch_b);
+    arg::require_comparable(ga, gb);
     std::vector<arg::MatchPair> pairs;
     arg::arg_similarity(ga, gb, weights, &pairs);
     rows = copy_rows<PairRow, arg::MatchPair>(pairs, [](const arg::MatchPair& p) {

@@ -1,4 +1,5 @@
 // arg_sim and the <~> operator: SIM(a, b) in [0, 1], 0 for the same shape.
+#include "graph/comparable.hpp"
 #include "match/similarity.hpp"
 
 #include "arg_cache.hpp"
@@ -15,6 +16,9 @@ double similarity(FunctionCallInfo fcinfo, const arg::Weights& weights) {
     arg::ArgGraph scratch_a, scratch_b;
     const arg::ArgGraph& ga = argpg::graph_of(cache, 0, a, scratch_a);
     const arg::ArgGraph& gb = argpg::graph_of(cache, 1, b, scratch_b);
+    // Checked on every call, on the graphs themselves: a cached query graph is no shortcut
+    // around it, and a ranking stops at the first row built otherwise than the query.
+    arg::require_comparable(ga, gb);
     sim = arg::arg_similarity(ga, gb, weights);
   });
   argpg::raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot compare ARGs");

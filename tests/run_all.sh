@@ -8,6 +8,8 @@
 #               objects, settings and SQLSTATEs)
 #   reference   tests/reference/examples.sh: every example of docs/REFERENCE.md runs as it says
 #   round trips tests/sql_roundtrip.sh: pg_dump/pg_restore and COPY (FORMAT binary) of arg values
+#   upgrade     tests/upgrade/upgrade.sh: a 0.1.0 database with its values, a generated column and
+#               GiST indexes through ALTER EXTENSION arg UPDATE, and its dump restored at today's
 #   cancel      tests/cancel/cancel.sh: statement_timeout and pg_cancel_backend stop long statements
 #   memory      tests/oom/out_of_memory.sh: a backend out of address space gets 53200 and goes on
 #   python      pytest on clients/python/tests: the psycopg client (Debian's python3, or $ARG_PYTHON)
@@ -172,6 +174,9 @@ tap_script "reference examples" reference "$cluster_up" tests/reference/examples
 
 banner "round trips (pg_dump, COPY)"
 tap_script "round trips (pg_dump, COPY)" roundtrip "$cluster_up" tests/sql_roundtrip.sh
+
+banner "upgrade from 0.1.0 (ALTER EXTENSION, pg_dump)"
+tap_script "upgrade from 0.1.0" upgrade "$cluster_up" tests/upgrade/upgrade.sh
 
 banner "cancellation (statement_timeout, pg_cancel_backend)"
 tap_script "cancellation" cancel "$cluster_up" tests/cancel/cancel.sh

@@ -25,6 +25,14 @@ class LimitError : public Error {
   using Error::Error;
 };
 
+// Two ARGs made by builders of another major or minor version, or with other build options,
+// whose comparison would rank by how they were built as much as by shape
+// (graph/comparable.hpp). The message names both versions and both options.
+class Incomparable : public Error {
+ public:
+  using Error::Error;
+};
+
 // The caller asked the computation to stop (query cancel, statement timeout, Ctrl-C).
 class Interrupted : public Error {
  public:

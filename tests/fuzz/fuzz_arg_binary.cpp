@@ -5,6 +5,7 @@
 // structural checks directly; whatever passes them must be safe to match.
 #include "fuzz_support.hpp"
 #include "gen/generate_models.hpp"
+#include "graph/comparable.hpp"
 #include "graph/serialize.hpp"
 #include "match/similarity.hpp"
 #include "pipeline/build_arg.hpp"
@@ -35,6 +36,11 @@ inline int fuzz_arg_binary(const std::uint8_t* data, std::size_t size) {
     reseal_arg_digest(resealed);
     ARG_FUZZ_CHECK(serialize_arg(graph) == resealed);
     exercise_matching(graph, binary_reference_graph());
+    // Any value the reader accepts, of any format, gets a verdict and a reason that names it.
+    ARG_FUZZ_CHECK(comparable(graph, binary_reference_graph()) ==
+                   incomparable_reason(graph, binary_reference_graph()).empty());
+    ARG_FUZZ_CHECK(!rebuild_needed(graph) || graph.format < kFormatVersion ||
+                   graph.builder_version / 100 != current_builder_version() / 100);
   } catch (const Error&) {
   }
   return 0;

@@ -1,7 +1,7 @@
 -- The SQL contract of the extension: its objects, their signatures and their markings.
 BEGIN;
 CREATE EXTENSION IF NOT EXISTS arg CASCADE;
-SELECT plan(156);
+SELECT plan(158);
 
 SELECT has_extension('arg', 'the arg extension is installed');
 SELECT has_type('arg', 'type arg exists');
@@ -80,6 +80,7 @@ INSERT INTO surface VALUES
   ('arg_knn(anyelement,name,arg,integer,integer,jsonb,name)',
    'TABLE(obj anyelement, sim double precision)', false),
   ('arg_index_trigger()', 'trigger', false),
+  ('arg_rebuild_needed(arg)', 'boolean', false),
   ('arg_version()', 'text', false);
 
 SELECT set_eq(
@@ -103,6 +104,8 @@ FROM surface s JOIN pg_proc p ON p.oid = s.sig WHERE s.pure ORDER BY s.sig::text
 SELECT volatility_is('arg_index_trigger', '{}'::name[], 'volatile',
                      'arg_index_trigger() is a volatile trigger function');
 SELECT volatility_is('arg_version', '{}'::name[], 'stable', 'arg_version() is STABLE');
+-- Its answer changes with the library installed, so it must not feed an index.
+SELECT volatility_is('arg_rebuild_needed', '{arg}'::name[], 'stable', 'arg_rebuild_needed(arg) is STABLE');
 SELECT is((SELECT provolatile FROM pg_proc
            WHERE oid = 'arg_knn(anyelement,name,arg,integer,integer,jsonb,name)'::regprocedure), 's',
           'arg_knn (it reads a table) is STABLE');

@@ -75,7 +75,8 @@ TEST(ArgFormat, VersionOneValuesReadAndCompareAsIn010) {
   EXPECT_NEAR(arg_similarity(f, t, weights_preset("mrg")), 0.527193, 5e-7);
   EXPECT_NEAR(arg_similarity(h, t, weights_preset("mrg")), 0.720556, 5e-7);
   EXPECT_EQ(arg_similarity(h, h), 0.0);
-  // A version-1 value against a version-2 one: only the graph term is shared.
+  // A version-1 value against a version-2 one: the core shares the graph term only, and the SQL
+  // surface refuses the pair as builds of builders 1.0 and 1.1 (test_comparable.cpp).
   const ArgGraph v2 = build_arg(test::torus());
   const SimilarityParts p = similarity_parts(h, v2, weights_preset("arg"));
   EXPECT_EQ(p.w_panorama, 0.0);

@@ -1,0 +1,175 @@
+#!/usr/bin/env bash
+# The upgrade path from arg 0.1.0: a database created at 0.1.0, holding values 0.1.0 wrote
+# (binary format 1, builder 1.0: tests/unit/fixtures/format1), a generated arg column, a column a
+# trigger keeps and GiST indexes, reaches with ALTER EXTENSION arg UPDATE exactly the catalogue
+# of a fresh install; its values still read, compare with their own kind and are refused against
+# newer builds (22023, naming both builders); arg_rebuild_needed finds them and the documented
+# statements rebuild them; the indexes still answer; and a pg_dump of the 0.1.0 database restores
+# into a database where arg is the current version.
+#
+#   tests/upgrade/upgrade.sh      against the server in PGHOST/PGPORT/PGUSER (superuser), with
+#                                 the current extension installed (make install)
+#
+# Prints TAP lines ("ok N - ...", "not ok N - ...") and exits non-zero when one fails.
+# tests/run_all.sh runs it on its throwaway cluster.
+set -uo pipefail
+
+cd "$(dirname "$0")/../.." || exit 1
+pg_config=${PG_CONFIG:-/usr/lib/postgresql/15/bin/pg_config}
+[[ -x "$pg_config" ]] || pg_config=$(command -v pg_config)
+bindir=$("$pg_config" --bindir)
+current=$(sed -n "s/^default_version *= *'\(.*\)'/\1/p" extension/arg.control)
+old=arg_upgrade_old fresh=arg_upgrade_fresh restored=arg_upgrade_restored
+work=$(mktemp -d)
+drop_databases() {
+  for db in $old $fresh $restored; do
+    PGOPTIONS='-c client_min_messages=warning' psql -X -q -d postgres \
+      -c "DROP DATABASE IF EXISTS $db WITH (FORCE)" >/dev/null 2>&1
+  done
+}
+trap 'drop_databases; rm -rf "$work"' EXIT
+
+n=0 failed=0
+check() { # check DESCRIPTION COMMAND...: ok when the command succeeds
+  local description=$1
+  shift
+  n=$((n + 1))
+  if "$@"; then echo "ok $n - $description"; else echo "not ok $n - $description"; failed=$((failed + 1)); fi
+}
+q() { psql -X -q -v ON_ERROR_STOP=1 -tA "$@"; }
+same() { [[ -n "$1" && "$1" == "$2" ]] || { echo "#   have: $2" >&2; echo "#   want: $1" >&2; return 1; }; }
+# fails_with DB SQLSTATE TEXT... SQL: the statement fails with that SQLSTATE and a message that
+# holds every TEXT.
+fails_with() {
+  local db=$1 code=$2 out
+  shift 2
+  local sql=${*: -1}
+  out=$(psql -X -q -d "$db" -v ON_ERROR_STOP=1 -v VERBOSITY=verbose -c "$sql" 2>&1) && {
+    echo "#   succeeded: $sql" >&2
+    return 1
+  }
+  for text in "$code" "${@:1:$#-1}"; do
+    [[ $out == *"$text"* ]] || { echo "#   no '$text' in: $out" >&2; return 1; }
+  done
+}
+fingerprint() { # DB TABLE COLUMN: md5 of every row's binary form, in id order
+  q -d "$1" -c "SELECT md5(string_agg(id || ':' || coalesce(encode(arg_send($3), 'hex'), 'null'), ',' ORDER BY id)) FROM $2"
+}
+catalogue() { q -d "$1" -f tests/upgrade/catalogue.sql; }
+# The ids an index scan gives for the nearest of TABLE to the value of row 1, and proof that an
+# index answered: nearest DB TABLE.
+nearest() {
+  q -d "$1" -c "SET enable_seqscan = off" -c "SET enable_bitmapscan = off" \
+    -c "EXPLAIN (COSTS OFF) SELECT id FROM $2 ORDER BY arg_global(descr) <#> arg_global((SELECT descr FROM $2 WHERE id = 1)) LIMIT 3" \
+    -c "SELECT string_agg(id::text, ',') FROM (SELECT id FROM $2 ORDER BY arg_global(descr) <#> arg_global((SELECT descr FROM $2 WHERE id = 1)) LIMIT 3) s" |
+    grep -E 'Index Scan|^[0-9,]+$' | sed -E 's/ using .*//; s/^ *-> *//' | tr '\n' ' '
+}
+value_of() { printf 'arg1:%s' "$(base64 -w0 "tests/unit/fixtures/format1/$1.arg")"; }
+
+echo "1..24"
+drop_databases
+q -d postgres -c "CREATE DATABASE $old" -c "CREATE DATABASE $fresh" -c "CREATE DATABASE $restored" \
+  >/dev/null || exit 1
+
+# The database at 0.1.0: values 0.1.0 wrote in a plain column (legacy) and in a column its
+# trigger kept (scans: the trigger is off while they are written, as if an 0.1.0 library had
+# built them); a generated column (museum); GiST indexes on both kinds.
+q -d $old -v human="$(value_of human_l2)" -v fourleg="$(value_of fourleg_l4_height)" \
+  -v torus="$(value_of torus_l3_centroid)" >/dev/null <<'SQL' || exit 1
+CREATE EXTENSION cube;
+CREATE EXTENSION arg VERSION '0.1.0';
+CREATE TABLE legacy (id int PRIMARY KEY, name text, descr arg);
+INSERT INTO legacy VALUES (1, 'human', :'human'), (2, 'fourleg', :'fourleg'), (3, 'torus', :'torus');
+CREATE INDEX legacy_global ON legacy USING gist (arg_global(descr));
+CREATE TABLE scans (id int PRIMARY KEY, mesh bytea, descr arg);
+CREATE TRIGGER scans_descr BEFORE INSERT OR UPDATE ON scans FOR EACH ROW
+  EXECUTE FUNCTION arg_index_trigger('mesh', 'descr');
+ALTER TABLE scans DISABLE TRIGGER scans_descr;
+INSERT INTO scans SELECT id, arg_generate_model(name, 0, 12), descr FROM legacy;
+ALTER TABLE scans ENABLE TRIGGER scans_descr;
+CREATE TABLE museum (
+  id int PRIMARY KEY,
+  mesh bytea,
+  descr arg GENERATED ALWAYS AS (arg_build(mesh)) STORED);
+INSERT INTO museum SELECT i, arg_generate_model(c, i::int, 12)
+FROM unnest(ARRAY['vase', 'cup', 'torus', 'chair', 'human']) WITH ORDINALITY AS t(c, i);
+CREATE INDEX museum_global ON museum USING gist (arg_global(descr));
+SQL
+PGOPTIONS='-c client_min_messages=warning' q -d $fresh -c "CREATE EXTENSION arg CASCADE" >/dev/null || exit 1
+
+legacy_before=$(fingerprint $old legacy descr)
+museum_before=$(fingerprint $old museum descr)
+legacy_nearest=$(nearest $old legacy)
+museum_nearest=$(nearest $old museum)
+check "CREATE EXTENSION arg VERSION '0.1.0' installs 0.1.0" \
+  same "0.1.0" "$(q -d $old -c "SELECT extversion FROM pg_extension WHERE extname = 'arg'")"
+check "values 0.1.0 wrote read as format 1 of builder 1.0.0" \
+  same "1 1.0.0|1 1.0.0|1 1.0.0" \
+  "$(q -d $old -c "SELECT string_agg(format('%s %s', arg_info(descr)->'format_version', arg_info(descr)->>'builder_version'), '|' ORDER BY id) FROM legacy")"
+
+# A dump of the 0.1.0 database, restored below into a database at the current version.
+check "pg_dump -Fc dumps the 0.1.0 database" "$bindir/pg_dump" -Fc -d $old -f "$work/old.dump"
+
+check "ALTER EXTENSION arg UPDATE succeeds" q -d $old -c "ALTER EXTENSION arg UPDATE"
+check "the extension is now at $current" \
+  same "$current" "$(q -d $old -c "SELECT extversion FROM pg_extension WHERE extname = 'arg'")"
+catalogue $fresh > "$work/fresh.txt"
+catalogue $old > "$work/updated.txt"
+check "the updated catalogue equals a fresh $current install" \
+  diff -u "$work/fresh.txt" "$work/updated.txt"
+check "the stored 0.1.0 values are byte-identical after the update" \
+  same "$legacy_before" "$(fingerprint $old legacy descr)"
+check "the generated column is byte-identical after the update" \
+  same "$museum_before" "$(fingerprint $old museum descr)"
+check "the GiST index on the 0.1.0 values answers as before" \
+  same "$legacy_nearest" "$(nearest $old legacy)"
+check "the GiST index on the generated column answers as before" \
+  same "$museum_nearest" "$(nearest $old museum)"
+[[ $legacy_nearest == "Index Scan "* ]] || echo "#   no index scan: $legacy_nearest" >&2
+
+check "a 0.1.0 value compares with itself (SIM 0)" \
+  same "0" "$(q -d $old -c "SELECT arg_sim(descr, descr) FROM legacy WHERE id = 1")"
+check "0.1.0 values of other build options are refused (22023, naming both options)" \
+  fails_with $old 22023 "levels=2" "levels=3" "builder 1.0.0" \
+  "SELECT arg_sim(a.descr, b.descr) FROM legacy a, legacy b WHERE a.id = 1 AND b.id = 3"
+check "a 0.1.0 value against a build of today, same options: refused (22023, naming builders 1.0.0 and 1.1.0)" \
+  fails_with $old 22023 "builder 1.0.0" "builder 1.1.0" "arg_rebuild_needed" \
+  "SELECT descr <~> arg_build(arg_generate_model('human', 0, 12), 'levels=2 base_points=16 surface=mesh holes=keep') FROM legacy WHERE id = 1"
+check "arg_matches and arg_part_match refuse them too" \
+  fails_with $old 22023 "builder 1.0.0" \
+  "SELECT (SELECT count(*) FROM arg_part_match(a.descr, 1, 0, b.descr)) + (SELECT count(*) FROM arg_matches(a.descr, b.descr)) FROM legacy a, museum b WHERE a.id = 1 AND b.id = 1"
+check "arg_rebuild_needed is true for every 0.1.0 value, false for today's builds" \
+  same "3|3|0" \
+  "$(q -d $old -c "SELECT (SELECT count(*) FILTER (WHERE arg_rebuild_needed(descr)) FROM legacy), (SELECT count(*) FILTER (WHERE arg_rebuild_needed(descr)) FROM scans), (SELECT count(*) FILTER (WHERE arg_rebuild_needed(descr)) FROM museum)")"
+
+# The documented rebuild statements: SET descr = NULL where a trigger keeps the column, SET mesh
+# = mesh for a generated column, arg_build again for a plain column.
+check "UPDATE ... SET descr = NULL rebuilds the trigger's column: none left to rebuild" \
+  same "3 0 t" \
+  "$(q -d $old -c "WITH u AS (UPDATE scans SET descr = NULL WHERE arg_rebuild_needed(descr) RETURNING 1) SELECT count(*) FROM u" \
+       -c "SELECT count(*) FILTER (WHERE arg_rebuild_needed(descr)), bool_and(descr = arg_build(mesh)) FROM scans" | tr '\n|' '  ' | sed 's/ $//')"
+check "UPDATE ... SET mesh = mesh recomputes the generated column as arg_build(mesh)" \
+  same "5 t" \
+  "$(q -d $old -c "WITH u AS (UPDATE museum SET mesh = mesh RETURNING descr = arg_build(mesh) AS fresh) SELECT count(*), bool_and(fresh) FROM u" | tr '|' ' ')"
+check "UPDATE ... SET descr = arg_build(...) rebuilds a plain column: none left to rebuild" \
+  same "0" \
+  "$(q -d $old -c "UPDATE legacy l SET descr = arg_build(s.mesh) FROM scans s WHERE s.id = l.id AND arg_rebuild_needed(l.descr)" \
+       -c "SELECT count(*) FILTER (WHERE arg_rebuild_needed(descr)) FROM legacy")"
+check "after the rebuild the values compare: the query's own row ranks first" \
+  same "1" \
+  "$(q -d $old -c "SET enable_seqscan = off" -c "SELECT id FROM legacy ORDER BY arg_global(descr) <#> arg_global((SELECT descr FROM legacy WHERE id = 1)), descr <~> (SELECT descr FROM legacy WHERE id = 1) LIMIT 1")"
+
+# pg_dump of 0.1.0 restored where arg is the current version.
+check "pg_restore of the 0.1.0 dump succeeds where arg is $current" \
+  "$bindir/pg_restore" --exit-on-error -d $restored "$work/old.dump"
+check "the restored database has arg $current and the catalogue of a fresh install" \
+  diff -u "$work/fresh.txt" <(catalogue $restored)
+check "the restored 0.1.0 values are byte-identical" \
+  same "$legacy_before" "$(fingerprint $restored legacy descr)"
+check "the restored generated column is rebuilt byte-identical" \
+  same "$museum_before" "$(fingerprint $restored museum descr)"
+check "the restored indexes answer as in 0.1.0" \
+  same "$legacy_nearest $museum_nearest" "$(nearest $restored legacy) $(nearest $restored museum)"
+
+echo "# $((n - failed)) passed, $failed failed"
+[[ $failed -eq 0 ]]
