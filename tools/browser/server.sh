@@ -35,6 +35,14 @@ running_pid() {
     echo "$pid"
 }
 
+# Exit 0 while process $1 exists and has not exited (a zombie not yet reaped counts as exited).
+alive() {
+  local stat
+  stat=$(cat "/proc/$1/stat" 2>/dev/null) || return 1
+  stat=${stat##*) }
+  [[ ${stat%% *} != Z ]]
+}
+
 url() { echo "http://127.0.0.1:$(cat "$port_file")/"; }
 
 # Exit 0 once GET /healthz answers 200 (the pages load and the database answers).
@@ -70,10 +78,11 @@ start() {
     export PGDATABASE=${PGDATABASE:-museum} PYTHONDONTWRITEBYTECODE=1
     exec "$python" "$here/serve.py" --port "$last" --port-file "$port_file" </dev/null >"$log" 2>&1
   ) &
-  echo $! >"$pid_file"
-  local deadline=$((SECONDS + ${BROWSER_START_TIMEOUT:-60}))
+  local pid=$! deadline=$((SECONDS + ${BROWSER_START_TIMEOUT:-60}))
+  echo "$pid" >"$pid_file"
   until [[ -f "$port_file" ]] && answers; do
-    if ! running_pid >/dev/null; then
+    # By its id, not running_pid: until the subshell has exec'd, its command line is this script's.
+    if ! alive "$pid"; then
       echo "browser: it stopped while starting; last lines of $log:" >&2
       tail -n 20 "$log" >&2
       rm -f "$pid_file"
@@ -87,7 +96,7 @@ start() {
     fi
     sleep 0.2
   done
-  echo "browser: running at $(url) (pid $(cat "$pid_file"), log $log)"
+  echo "browser: running at $(url) (pid $pid, log $log)"
 }
 
 stop() {
