@@ -4,7 +4,8 @@
 #   make install             install the extension into PostgreSQL 15 (as root, or it uses sudo)
 #   make test                install missing packages, build everything, run every test suite
 #   make demo [MODELS=DIR]   ... then rank a sample catalogue (or DIR's meshes) in a throwaway cluster
-#   make demo-stop           stop the demo's cluster
+#                            and start the catalogue browser beside it (its URL is printed)
+#   make demo-stop           stop the demo's browser and cluster
 #   make installcheck        pg_regress (sql/, expected/) against the server in PGHOST/PGPORT
 #   make distclean           stop the clusters and remove the build tree
 
@@ -110,6 +111,7 @@ demo: deps
 	tools/demo/run.sh $(if $(MODELS),"$(MODELS)")
 
 demo-stop:
+	tools/browser/server.sh stop $(BUILD_DIR)/pg-demo
 	tools/pg/cluster.sh stop $(BUILD_DIR)/pg-demo
 
 distclean: demo-stop

@@ -13,6 +13,8 @@
 #   cancel      tests/cancel/cancel.sh: statement_timeout and pg_cancel_backend stop long statements
 #   memory      tests/oom/out_of_memory.sh: a backend out of address space gets 53200 and goes on
 #   python      pytest on clients/python/tests: the psycopg client (Debian's python3, or $ARG_PYTHON)
+#   browser     tests/browser/run_browser_tests.sh: the catalogue browser (tools/browser) on a
+#               sample catalogue, driven by headless Chromium (selenium, chromium-driver)
 #   server log  no backend of the throwaway cluster died ("terminated by signal") during the above,
 #               read where tools/pg/cluster.sh log-path says the log is; and a test of that check
 #   shards      tests/scale/shards.sh: postgres_fdw, a coordinator and two shards (its own clusters)
@@ -202,6 +204,10 @@ if [[ $can_pytest -eq 1 ]]; then
 else
   suite "python client (pytest)" 0 1
 fi
+
+# --- the catalogue browser in headless Chromium, on the same cluster ------------------------
+banner "catalogue browser (chromium)"
+tap_script "catalogue browser (chromium)" browser "$cluster_up" tests/browser/run_browser_tests.sh
 
 # --- the server survived everything above ---------------------------------------------------
 banner "server log"

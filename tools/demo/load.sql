@@ -21,7 +21,8 @@ CREATE TABLE museum_models (
   material     text,
   file         text NOT NULL,
   mesh         bytea NOT NULL,
-  descr        arg GENERATED ALWAYS AS (arg_build(mesh)) STORED
+  descr        arg GENERATED ALWAYS AS (arg_build(mesh)) STORED,
+  thumbnail    bytea                     -- PNG for the browser, by tools/browser/thumbnails.py
 );
 
 CREATE TEMP TABLE catalogue (

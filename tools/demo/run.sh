@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The demo: a throwaway cluster, a catalogue of models loaded into a table, one ranking query.
+# The demo: a throwaway cluster, a catalogue of models loaded into a table, one ranking query,
+# and a web browser of the catalogue.
 #
 #   tools/demo/run.sh          the sample catalogue made by `argtool gen` (about 40 models)
 #   tools/demo/run.sh DIR      every .off .obj .ply .stl .glb file under DIR instead
@@ -7,7 +8,8 @@
 # Environment: BUILD_DIR (default build), QUERY (model_id to rank against, default the first one),
 # DEMO_ROWS (rows to print, default 15), DEMO_PER_CLASS (sample models per class, default 5),
 # DEMO_PROGRESS_EVERY (a progress line per this many models, default 10).
-# The cluster stays up; `make demo-stop` stops it.
+# The cluster stays up, with the catalogue browser (tools/browser) beside it on 127.0.0.1; `make
+# demo-stop` stops both.
 set -euo pipefail
 
 cd "$(dirname "$0")/../.."
@@ -15,6 +17,8 @@ build=${BUILD_DIR:-build}
 pgdir=$build/pg-demo
 work=$build/demo
 models_dir=${1:-}
+# Debian's interpreter, which sees the python3-* packages (another python3 may come first on PATH).
+python=${ARG_PYTHON:-/usr/bin/python3}
 mkdir -p "$work"
 work=$(cd "$work" && pwd -P)
 
@@ -68,6 +72,12 @@ if [[ $(psql -X -q -d museum -tAc 'SELECT count(*) FROM museum_models') -eq 0 ]]
   exit 1
 fi
 
+echo "demo: rendering a thumbnail of each model for the browser (argtool render)"
+# A user's model that does not render keeps no picture; the sample must render whole.
+keep_going=()
+[[ $mode == user ]] && keep_going=(--keep-going)
+PGDATABASE=museum "$python" tools/browser/thumbnails.py --argtool "$build/argtool" "${keep_going[@]}"
+
 if [[ -n "${QUERY:-}" ]] && [[ -z $(psql -X -q -d museum -v q="$QUERY" -tA \
   <<<"SELECT 1 FROM museum_models WHERE model_id = :'q'") ]]; then
   echo "demo: QUERY=$QUERY is not a model_id of the catalogue" >&2
@@ -76,9 +86,14 @@ fi
 psql -X -q -d museum -v ON_ERROR_STOP=1 -v mode="$mode" -v query="${QUERY:-}" \
   -v rows="${DEMO_ROWS:-15}" -f tools/demo/rank.sql
 
+# The catalogue browser beside the cluster; restarted, so that it reads the cluster just started.
+tools/browser/server.sh stop "$pgdir" >/dev/null
+tools/browser/server.sh start "$pgdir"
+
 cat <<EOF
 
 The demo cluster is still running (data in $pgdir). Connect with:
   psql -h localhost -p $PGPORT -U postgres museum
-Stop it with: make demo-stop
+Browse the catalogue (this machine only): $(tools/browser/server.sh url "$pgdir")
+Stop both with: make demo-stop
 EOF

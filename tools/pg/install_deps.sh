@@ -18,6 +18,10 @@ packages=(
   cmake g++ make clang-format libgtest-dev libbenchmark-dev
   # the Python client (clients/python) and its tests: Debian's packages, as PyPI is not used
   python3-psycopg python3-numpy python3-pytest
+  # the catalogue browser (tools/browser) and its test in headless Chromium (tests/browser;
+  # Pillow decodes the test's screenshot)
+  python3-fastapi python3-uvicorn python3-multipart python3-jinja2
+  python3-selenium chromium chromium-driver python3-pil
   # libFuzzer targets and the sanitizer runtimes (tests/fuzz)
   clang libclang-rt-14-dev
 )

@@ -1,0 +1,82 @@
+"""Renders each model of museum_models without a thumbnail with `argtool render` and stores the PNG in the table."""
+
+from __future__ import annotations
+
+import argparse
+import concurrent.futures
+import os
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+from typing import Optional, Tuple
+
+import psycopg
+
+TABLE = "museum_models"
+
+
+def render_one(argtool: str, size: int, model_id: int, scratch: Path, timeout: float) -> Tuple[int, Optional[str]]:
+    """Renders one model from the mesh stored in the table (so from what the server built, not a
+    file that may have moved since) and stores the PNG. Returns (id, None) or (id, why not)."""
+    with psycopg.connect(autocommit=True) as conn:
+        row = conn.execute(f"SELECT file, mesh FROM {TABLE} WHERE id = %s", (model_id,)).fetchone()
+        if row is None:
+            return model_id, "gone from the table"
+        file, mesh = row
+        # argtool reads the format from the file name's suffix.
+        mesh_path = scratch / f"{model_id}{Path(file).suffix.lower() or '.off'}"
+        png_path = scratch / f"{model_id}.png"
+        mesh_path.write_bytes(bytes(mesh))
+        try:
+            # A blank caption: the page prints the title; the colour legend would be unreadable
+            # at this size.
+            done = subprocess.run(
+                [argtool, "render", str(mesh_path), "-o", str(png_path), "--size", str(size),
+                 "--no-legend", "--title", " "],
+                capture_output=True, text=True, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            return model_id, f"argtool render took more than {timeout:.0f} s"
+        finally:
+            mesh_path.unlink(missing_ok=True)
+        if done.returncode != 0:
+            lines = (done.stderr.strip() or done.stdout.strip() or f"exit status {done.returncode}").splitlines()
+            return model_id, lines[-1]
+        conn.execute(f"UPDATE {TABLE} SET thumbnail = %b WHERE id = %s", (png_path.read_bytes(), model_id))
+        png_path.unlink()
+        return model_id, None
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--argtool", default="build/argtool", help="the argtool binary")
+    parser.add_argument("--size", type=int, default=256, help="width and height in pixels")
+    parser.add_argument("--jobs", type=int, default=2, help="renders at once")
+    parser.add_argument("--timeout", type=float, default=300, help="seconds one render may take")
+    parser.add_argument("--keep-going", action="store_true",
+                        help="a model that does not render keeps no thumbnail (exit 0) instead of failing")
+    args = parser.parse_args()
+    if not os.access(args.argtool, os.X_OK):
+        print(f"thumbnails: no argtool at {args.argtool} (build first)", file=sys.stderr)
+        return 1
+    with psycopg.connect(autocommit=True) as conn:
+        ids = [r[0] for r in conn.execute(f"SELECT id FROM {TABLE} WHERE thumbnail IS NULL ORDER BY id")]
+    failed = 0
+    with tempfile.TemporaryDirectory(prefix="arg-thumbnails-") as scratch, \
+            concurrent.futures.ThreadPoolExecutor(max(1, args.jobs)) as pool:
+        jobs = [pool.submit(render_one, args.argtool, args.size, i, Path(scratch), args.timeout) for i in ids]
+        for done, job in enumerate(concurrent.futures.as_completed(jobs), 1):
+            model_id, why = job.result()
+            if why is not None:
+                failed += 1
+                print(f"thumbnails: model {model_id} has no thumbnail: {why}", file=sys.stderr)
+            if done % 10 == 0 or done == len(jobs):
+                print(f"  {done}/{len(jobs)} thumbnails rendered", flush=True)
+    if failed and not args.keep_going:
+        print(f"thumbnails: {failed} of {len(ids)} models could not be rendered", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
