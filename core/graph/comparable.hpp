@@ -12,9 +12,9 @@ namespace arg {
 // measures mean or how they are taken (builder 1.1 fills holes and measures curvature on a copy
 // smoothed by 80 Taubin steps, where 1.0 kept holes and took the mesh as given), so the same
 // mesh gives other values and SIM between builds of two minor versions ranks by the difference
-// of builders as much as of shapes. A patch changes no
-// value's meaning. Comparable: the same major and minor version and the same build options
-// (format_build_options of both equal); patch versions may differ.
+// of builders as much as of shapes. A patch changes no value's meaning. Comparable: the same
+// major and minor version and the same build options (format_build_options of both equal);
+// patch versions may differ.
 bool comparable(const ArgGraph& a, const ArgGraph& b);
 
 // Empty when comparable; otherwise a sentence naming both builder versions and both options.
