@@ -22,15 +22,8 @@ drop_databases() {
 }
 trap 'drop_databases; rm -rf "$work"' EXIT
 
-n=0 failed=0
-check() {  # check DESCRIPTION COMMAND...: ok when the command succeeds
-  local description=$1
-  shift
-  n=$((n + 1))
-  if "$@"; then echo "ok $n - $description"; else echo "not ok $n - $description"; failed=$((failed + 1)); fi
-}
-q() { psql -X -q -v ON_ERROR_STOP=1 -tA "$@"; }
-same() { [[ -n "$1" && "$1" == "$2" ]] || { echo "#   have: $2" >&2; echo "#   want: $1" >&2; return 1; }; }
+# shellcheck source=tap_checks.sh
+. "$(dirname "${BASH_SOURCE[0]}")/tap_checks.sh"
 
 # md5 over every row of a column's binary form, in id order (NULL rows count as 'null').
 fingerprint() {  # DB TABLE COLUMN

@@ -9,6 +9,7 @@
 #include "common/errors.hpp"
 #include "features/laplace_spectrum.hpp"
 #include "features/panorama_descriptor.hpp"
+#include "format1_fixtures.hpp"
 #include "graph/serialize.hpp"
 #include "match/similarity.hpp"
 #include "pipeline/build_arg.hpp"
@@ -16,14 +17,6 @@
 
 namespace arg {
 namespace {
-
-namespace fs = std::filesystem;
-
-std::string fixture(const std::string& name) {
-  const fs::path p = fs::path(__FILE__).parent_path() / "fixtures" / "format1" / (name + ".arg");
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 TEST(ArgFormat, VersionTwoRoundTripsBinaryAndTextByteForByte) {
   const ArgGraph g = build_arg(test::torus());
@@ -55,8 +48,9 @@ TEST(ArgFormat, TheHoleOptionLivesInTheFormerlyReservedByte) {
 }
 
 TEST(ArgFormat, VersionOneValuesReadAndCompareAsIn010) {
-  const std::string human = fixture("human_l2"), fourleg = fixture("fourleg_l4_height"),
-                    torus = fixture("torus_l3_centroid");
+  const std::string human = format1_fixture("human_l2"),
+                    fourleg = format1_fixture("fourleg_l4_height"),
+                    torus = format1_fixture("torus_l3_centroid");
   ASSERT_FALSE(human.empty());
   const ArgGraph h = deserialize_arg(human), f = deserialize_arg(fourleg),
                  t = deserialize_arg(torus);

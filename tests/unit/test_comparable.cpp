@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "common/errors.hpp"
+#include "format1_fixtures.hpp"
 #include "graph/comparable.hpp"
 #include "graph/serialize.hpp"
 #include "pipeline/build_arg.hpp"
@@ -14,14 +15,6 @@
 
 namespace arg {
 namespace {
-
-namespace fs = std::filesystem;
-
-std::string fixture(const std::string& name) {
-  const fs::path p = fs::path(__FILE__).parent_path() / "fixtures" / "format1" / (name + ".arg");
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 // The stored bytes of `bytes` with another builder version, digest resealed.
 std::string with_builder(std::string bytes, std::uint32_t version) {
@@ -90,7 +83,7 @@ TEST(Comparable, EveryBuildOptionButThreadsCounts) {
 }
 
 TEST(Comparable, VersionOneValuesCompareWithTheirOwnKindOnly) {
-  const std::string human = fixture("human_l2");
+  const std::string human = format1_fixture("human_l2");
   ASSERT_FALSE(human.empty());
   const ArgGraph h = deserialize_arg(human);
   EXPECT_EQ(builder_version_text(h.builder_version), "1.0.0");
@@ -106,7 +99,7 @@ TEST(Comparable, VersionOneValuesCompareWithTheirOwnKindOnly) {
   EXPECT_NE(reason.find("builder 1.0.0"), std::string::npos) << reason;
   EXPECT_NE(reason.find("builder 1.1.0"), std::string::npos) << reason;
   // Values of other options, as the fixtures are, do not compare either.
-  EXPECT_FALSE(comparable(h, deserialize_arg(fixture("torus_l3_centroid"))));
+  EXPECT_FALSE(comparable(h, deserialize_arg(format1_fixture("torus_l3_centroid"))));
 }
 
 TEST(Comparable, RebuildIsNeededForOlderFormatsAndOtherMinorVersions) {
@@ -117,7 +110,7 @@ TEST(Comparable, RebuildIsNeededForOlderFormatsAndOtherMinorVersions) {
   minor.builder_version += 100;
   EXPECT_FALSE(rebuild_needed(patched));
   EXPECT_TRUE(rebuild_needed(minor));
-  EXPECT_TRUE(rebuild_needed(deserialize_arg(fixture("fourleg_l4_height"))));
+  EXPECT_TRUE(rebuild_needed(deserialize_arg(format1_fixture("fourleg_l4_height"))));
 }
 
 TEST(Comparable, BuilderVersionText) {

@@ -29,15 +29,8 @@ drop_databases() {
 }
 trap 'drop_databases; rm -rf "$work"' EXIT
 
-n=0 failed=0
-check() { # check DESCRIPTION COMMAND...: ok when the command succeeds
-  local description=$1
-  shift
-  n=$((n + 1))
-  if "$@"; then echo "ok $n - $description"; else echo "not ok $n - $description"; failed=$((failed + 1)); fi
-}
-q() { psql -X -q -v ON_ERROR_STOP=1 -tA "$@"; }
-same() { [[ -n "$1" && "$1" == "$2" ]] || { echo "#   have: $2" >&2; echo "#   want: $1" >&2; return 1; }; }
+# shellcheck source=../tap_checks.sh
+. tests/tap_checks.sh
 # fails_with DB SQLSTATE TEXT... SQL: the statement fails with that SQLSTATE and a message that
 # holds every TEXT.
 fails_with() {
