@@ -4,8 +4,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <string_view>
 #include <unordered_map>
 
+#include "common/hash.hpp"
 #include "io/polygon_soup.hpp"
 
 namespace arg::io {
@@ -29,13 +31,11 @@ class StlWelder {
   };
   struct Hash {
     std::size_t operator()(const Key& k) const {
-      std::uint32_t b[3];
-      std::memcpy(&b[0], &k.x, 4);
-      std::memcpy(&b[1], &k.y, 4);
-      std::memcpy(&b[2], &k.z, 4);
-      std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the three bit patterns
-      for (std::uint32_t v : b) h = (h ^ v) * 1099511628211ull;
-      return static_cast<std::size_t>(h);
+      char bits[12];  // the three bit patterns
+      std::memcpy(bits, &k.x, 4);
+      std::memcpy(bits + 4, &k.y, 4);
+      std::memcpy(bits + 8, &k.z, 4);
+      return static_cast<std::size_t>(fnv1a_64(std::string_view(bits, sizeof bits)));
     }
   };
   std::unordered_map<Key, int, Hash> index_;

@@ -45,21 +45,24 @@ std::string either(const char* const* words, int count) {
   return out;
 }
 
+// The name of choice i of `names`, or of choice `fallback` for a value out of range.
+template <std::size_t N>
+const char* name_in(const char* const (&names)[N], int i, int fallback) {
+  return i >= 0 && i < int(N) ? names[i] : names[fallback];
+}
+
 }  // namespace
 
 const char* mu_kind_name(MuKind kind) {
-  const int i = int(kind);
-  return i < int(std::size(kMuNames)) ? kMuNames[i] : kMuNames[0];
+  return name_in(kMuNames, int(kind), 0);
 }
 
 const char* surface_kind_name(SurfaceKind kind) {
-  const int i = int(kind);
-  return i < int(std::size(kSurfaceNames)) ? kSurfaceNames[i] : kSurfaceNames[0];
+  return name_in(kSurfaceNames, int(kind), 0);
 }
 
 const char* hole_kind_name(HoleKind kind) {
-  const int i = int(kind);
-  return i < int(std::size(kHoleNames)) ? kHoleNames[i] : kHoleNames[1];
+  return name_in(kHoleNames, int(kind), 1);
 }
 
 const std::vector<BuildOptionKey>& build_option_keys() {

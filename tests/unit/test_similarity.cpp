@@ -14,6 +14,16 @@ using namespace arg;
 
 namespace {
 
+// The message parse_weights gives for `text`, or "accepted".
+std::string weights_error(const char* text) {
+  try {
+    parse_weights(text);
+  } catch (const InputError& e) {
+    return std::string(e.what());
+  }
+  return std::string("accepted");
+}
+
 const std::vector<ArgGraph>& shapes() {
   static const std::vector<ArgGraph> graphs = [] {
     std::vector<ArgGraph> g;
@@ -125,23 +135,15 @@ TEST(Weights, TextRoundTripAndPresets) {
 }
 
 TEST(Weights, RejectBadTextWithAClearMessage) {
-  auto message = [](const char* text) {
-    try {
-      parse_weights(text);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
-  };
-  EXPECT_NE(message("alpha_l=-1").find("alpha_l"), std::string::npos);
-  EXPECT_NE(message("alpha_l=nan").find("not a finite number"), std::string::npos);
-  EXPECT_NE(message("bogus=1").find("unknown key"), std::string::npos);
-  EXPECT_NE(message("fancy").find("not a preset"), std::string::npos);
-  EXPECT_NE(message("").find("empty"), std::string::npos);
-  EXPECT_NE(
-      message("alpha_s=0 beta_s=0 lambda_1=0 lambda_2=0 lambda_3=0 lambda_4=0").find("positive"),
-      std::string::npos);
-  EXPECT_NE(message("alpha_l=").find("malformed"), std::string::npos);
+  EXPECT_NE(weights_error("alpha_l=-1").find("alpha_l"), std::string::npos);
+  EXPECT_NE(weights_error("alpha_l=nan").find("not a finite number"), std::string::npos);
+  EXPECT_NE(weights_error("bogus=1").find("unknown key"), std::string::npos);
+  EXPECT_NE(weights_error("fancy").find("not a preset"), std::string::npos);
+  EXPECT_NE(weights_error("").find("empty"), std::string::npos);
+  EXPECT_NE(weights_error("alpha_s=0 beta_s=0 lambda_1=0 lambda_2=0 lambda_3=0 lambda_4=0")
+                .find("positive"),
+            std::string::npos);
+  EXPECT_NE(weights_error("alpha_l=").find("malformed"), std::string::npos);
 }
 
 TEST(Weights, ReadableNamesSetTheSameWeightAsThePapersSymbols) {
@@ -203,22 +205,15 @@ TEST(Weights, ABareWordIsAPresetAndKeyEqualsValueIsAWeight) {
 }
 
 TEST(Weights, AWeightGivenTwiceIsAnErrorThatNamesBothSpellings) {
-  auto message = [](const char* text) {
-    try {
-      parse_weights(text);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
-  };
-  const std::string both = message("curvature=2 lambda_3=3");
+  const std::string both = weights_error("curvature=2 lambda_3=3");
   EXPECT_NE(both.find("curvature"), std::string::npos) << both;
   EXPECT_NE(both.find("lambda_3"), std::string::npos) << both;
-  EXPECT_NE(message("lambda_3=3, curvature=3").find("both set lambda_3"), std::string::npos);
-  EXPECT_NE(message("colour=1 color=1").find("both set lambda_4"), std::string::npos);
-  EXPECT_NE(message("lambda_3=2 lambda_3=2").find("lambda_3 is given twice"), std::string::npos);
-  EXPECT_NE(message("norm=l1 norm=l2").find("norm is given twice"), std::string::npos);
-  EXPECT_NE(message("panorama=1 panorama=1").find("given twice"), std::string::npos);
+  EXPECT_NE(weights_error("lambda_3=3, curvature=3").find("both set lambda_3"), std::string::npos);
+  EXPECT_NE(weights_error("colour=1 color=1").find("both set lambda_4"), std::string::npos);
+  EXPECT_NE(weights_error("lambda_3=2 lambda_3=2").find("lambda_3 is given twice"),
+            std::string::npos);
+  EXPECT_NE(weights_error("norm=l1 norm=l2").find("norm is given twice"), std::string::npos);
+  EXPECT_NE(weights_error("panorama=1 panorama=1").find("given twice"), std::string::npos);
   // A preset, then a key: the key changes the preset's value, which is not a repetition.
   EXPECT_FLOAT_EQ(parse_weights("mrg curvature=2").lambda_3, 2.0f);
 }
