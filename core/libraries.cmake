@@ -27,7 +27,8 @@ set(ARG_METHOD_SOURCES
     features/curvature.cpp features/depth_buffer_descriptor.cpp features/depth_images.cpp
     features/laplace_spectrum.cpp features/node_attributes.cpp features/panorama_descriptor.cpp
     features/panoramic_views.cpp features/shape_distributions.cpp
-    graph/arg_graph.cpp graph/comparable.cpp graph/search_descriptor.cpp graph/serialize.cpp
+    graph/arg_graph.cpp graph/comparable.cpp graph/compact_nodes.cpp graph/pool_fragments.cpp
+    graph/quantise.cpp graph/search_descriptor.cpp graph/serialize.cpp
     match/mpair.cpp match/node_similarity.cpp match/part_match.cpp match/similarity.cpp
     match/similarity_terms.cpp match/subgraph.cpp match/weights.cpp
     pipeline/build_arg.cpp pipeline/build_options.cpp pipeline/node_positions.cpp

@@ -65,6 +65,7 @@ std::string describe(const arg::ArgGraph& g, std::size_t bytes) {
          ", \"open\": " + ((s.flags & arg::kFlagOpen) ? "true" : "false") +
          ", \"wide_open\": " + ((s.flags & arg::kFlagWideOpen) ? "true" : "false") +
          ", \"proxy\": " + ((s.flags & arg::kFlagProxy) ? "true" : "false") +
+         ", \"pooled_components\": " + std::to_string(s.pooled) +
          ", \"whole_shape\": " + (g.panorama.empty() ? "false" : "true") +
          ", \"options\": " + json_string(arg::format_build_options(g.options)) +
          ", \"builder_version\": " + json_string(arg::builder_version_text(g.builder_version)) +

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pipeline/build_options.hpp"
@@ -41,7 +42,9 @@ struct ArgNode {
 // Summary flags. Open: the mesh had boundary edges. Proxy: mu and the graph were computed on
 // its watertight proxy. Wide open: its boundary is longer than 4 sqrt(area) (a sheet, or
 // openings far larger than a scan's holes), so its spectrum is not the closed shape's.
-inline constexpr std::uint16_t kFlagOpen = 1, kFlagProxy = 2, kFlagWideOpen = 4;
+// Pooled: the graph held more nodes than a level may keep, and its smallest connected
+// components were pooled into one (graph/pool_fragments.hpp).
+inline constexpr std::uint16_t kFlagOpen = 1, kFlagProxy = 2, kFlagWideOpen = 4, kFlagPooled = 8;
 
 struct ArgSummary {
   std::uint32_t triangles = 0;  // after cleaning and refinement
@@ -49,14 +52,15 @@ struct ArgSummary {
   std::uint16_t components = 0;  // connected components of the cleaned mesh
   std::uint16_t genus = 0;       // independent loops of the finest Reeb graph
   std::uint16_t has_colour = 0;
-  std::uint16_t flags = 0;  // kFlagOpen | kFlagProxy | kFlagWideOpen
-  float area = 0;           // surface area before scale normalisation
-  float volume = 0;         // enclosed volume before scale normalisation
-  float scale = 0;          // the factor applied to reach unit RMS radius
+  std::uint16_t flags = 0;   // kFlagOpen | kFlagProxy | kFlagWideOpen | kFlagPooled
+  float area = 0;            // surface area before scale normalisation
+  float volume = 0;          // enclosed volume before scale normalisation
+  float scale = 0;           // the factor applied to reach unit RMS radius
+  std::uint16_t pooled = 0;  // components pooled into one (format 3; capped at 65,535)
 };
 
 struct ArgGraph {
-  std::uint16_t format = 2;  // binary format it was read in (or will be written in): 1 or 2
+  std::uint16_t format = 3;  // binary format it was read in (or will be written in): 1 to 3
   BuildOptions options;
   std::uint32_t builder_version = 0;  // major * 10000 + minor * 100 + patch
   ArgSummary summary;
@@ -75,5 +79,9 @@ struct ArgGraph {
 
 // Builder version as stored in ARGs made by this build of the core.
 std::uint32_t current_builder_version();
+
+// Fills the links from the nodes' parents and an undirected edge list: each node's children in
+// index order, its neighbours sorted, repeated edges once. Node ranges must be set already.
+void link_graph(ArgGraph& g, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges);
 
 }  // namespace arg

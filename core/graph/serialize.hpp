@@ -9,13 +9,22 @@
 
 namespace arg {
 
-// The version this build writes; it reads 1 (no proxy option, no sections) and 2.
-inline constexpr std::uint16_t kFormatVersion = 2;
+// The version this build writes; it reads 1 (no proxy option, no sections), 2 (float records,
+// float sections) and 3 (byte-coded records and sections, colour only when there is colour).
+inline constexpr std::uint16_t kFormatVersion = 3;
 
 // Little-endian bytes: header (magic, versions, options, counts, summary, global descriptor,
-// surface options), then node records, children, adjacency and tagged sections (the mu
-// histogram, the panorama). Deterministic: equal graphs give equal bytes.
+// surface options, in format 3 the pooled components), then the nodes and their links, then
+// tagged sections (the spectrum, the panorama, in format 3 the colour). Written in
+// graph.format, so a value read is written back in the format it came in. Format 3 stores
+// each number in one or two bytes (graph/quantise.hpp, graph/compact_nodes.hpp): a graph
+// written and read back differs from the one built by those codes' rounding, which is why
+// build_arg returns stored_form of what it built. Deterministic: equal graphs give equal bytes.
 std::string serialize_arg(const ArgGraph& graph);
+
+// The graph as a reader of its bytes sees it: serialised and read back. Reading and writing
+// it again keeps every byte.
+ArgGraph stored_form(const ArgGraph& graph);
 
 // Strict reader: checks sizes, counts, ranges, ordering, links both ways, finiteness and the
 // digest; throws InputError saying what is wrong and at which offset. `check_digest` false

@@ -10,6 +10,7 @@
 #include "features/node_attributes.hpp"
 #include "features/panorama_descriptor.hpp"
 #include "features/shape_distributions.hpp"
+#include "graph/pool_fragments.hpp"
 #include "graph/serialize.hpp"
 #include "mesh/mesh_edges.hpp"
 #include "mesh/taubin_smoothing.hpp"
@@ -162,8 +163,11 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
   check_interrupt(stop);
   // The views see the model as it was given, not its proxy: a soup's parts as they are.
   g.panorama = panorama_descriptor(prepared.proxy ? prepared.posed : smooth);
+  pool_fragments(g, max_nodes_per_level(options.levels));
   rep.ms.features = clock.lap();
-  return g;
+  // What a reader of the stored value will see: SIM is the same for a graph just built and
+  // the same graph stored and read back.
+  return stored_form(g);
 }
 
 std::string build_arg_bytes(std::string_view mesh_bytes, std::string_view texture,

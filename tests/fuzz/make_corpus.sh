@@ -66,9 +66,12 @@ cp "$work/ply/fourleg_00.ply" "$corpus/fuzz_build/gen_fourleg.ply"
 cp "$work/stl/human_00.stl" "$corpus/fuzz_build/gen_human.stl"
 cp "$work/obj/human_00.obj" "$corpus/fuzz_build/gen_human.obj"
 
-# Format-1 values as arg 0.1.0 wrote them (the unit tests' fixtures) stay seeds of the readers.
-for f in "$root"/tests/unit/fixtures/format1/*.arg; do
-  cp "$f" "$work/arg/v1_$(basename "$f")"
+# Values of earlier formats as arg 0.1.0 (format 1) and 0.2.0 (format 2) wrote them (the unit
+# tests' fixtures) stay seeds of the readers; seeds are at most 64 kB.
+for version in 1 2; do
+  for f in "$root"/tests/unit/fixtures/format$version/*.arg; do
+    [[ $(stat -c %s "$f") -le 65536 ]] && cp "$f" "$work/arg/v${version}_$(basename "$f")"
+  done
 done
 python3 "$here/make_seeds.py" "$work" "$corpus"
 

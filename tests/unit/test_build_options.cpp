@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "common/errors.hpp"
+#include "input_error.hpp"
 #include "pipeline/build_options.hpp"
 
 using namespace arg;
@@ -9,12 +10,7 @@ using namespace arg;
 namespace {
 
 std::string message(const std::string& text) {
-  try {
-    parse_build_options(text);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "accepted";
+  return input_error_of([&] { parse_build_options(text); }, "accepted");
 }
 
 }  // namespace

@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "common/errors.hpp"
-#include "format1_fixtures.hpp"
+#include "format_fixtures.hpp"
 #include "graph/comparable.hpp"
 #include "graph/serialize.hpp"
 #include "pipeline/build_arg.hpp"
@@ -83,7 +83,7 @@ TEST(Comparable, EveryBuildOptionButThreadsCounts) {
 }
 
 TEST(Comparable, VersionOneValuesCompareWithTheirOwnKindOnly) {
-  const std::string human = format1_fixture("human_l2");
+  const std::string human = format_fixture(1, "human_l2");
   ASSERT_FALSE(human.empty());
   const ArgGraph h = deserialize_arg(human);
   EXPECT_EQ(builder_version_text(h.builder_version), "1.0.0");
@@ -97,9 +97,9 @@ TEST(Comparable, VersionOneValuesCompareWithTheirOwnKindOnly) {
   EXPECT_FALSE(comparable(h, now));
   const std::string reason = incomparable_reason(h, now);
   EXPECT_NE(reason.find("builder 1.0.0"), std::string::npos) << reason;
-  EXPECT_NE(reason.find("builder 1.1.0"), std::string::npos) << reason;
+  EXPECT_NE(reason.find("builder 1.2.0"), std::string::npos) << reason;
   // Values of other options, as the fixtures are, do not compare either.
-  EXPECT_FALSE(comparable(h, deserialize_arg(format1_fixture("torus_l3_centroid"))));
+  EXPECT_FALSE(comparable(h, deserialize_arg(format_fixture(1, "torus_l3_centroid"))));
 }
 
 TEST(Comparable, RebuildIsNeededForOlderFormatsAndOtherMinorVersions) {
@@ -110,7 +110,14 @@ TEST(Comparable, RebuildIsNeededForOlderFormatsAndOtherMinorVersions) {
   minor.builder_version += 100;
   EXPECT_FALSE(rebuild_needed(patched));
   EXPECT_TRUE(rebuild_needed(minor));
-  EXPECT_TRUE(rebuild_needed(deserialize_arg(format1_fixture("fourleg_l4_height"))));
+  EXPECT_TRUE(rebuild_needed(deserialize_arg(format_fixture(1, "fourleg_l4_height"))));
+  // 0.2.0's values: format 2, builder 1.1 (before byte-coded records and pooled fragments).
+  const ArgGraph v2 = deserialize_arg(format_fixture(2, "vase_colour"));
+  EXPECT_TRUE(rebuild_needed(v2));
+  EXPECT_FALSE(comparable(v2, build_arg(test::torus())));
+  EXPECT_TRUE(comparable(v2, deserialize_arg(format_fixture(2, "chair_proxy"))) ==
+              (format_build_options(v2.options) ==
+               format_build_options(deserialize_arg(format_fixture(2, "chair_proxy")).options)));
 }
 
 TEST(Comparable, BuilderVersionText) {

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "input_error.hpp"
 #include "io/read_mesh.hpp"
 #include "test_io_support.hpp"
 
@@ -96,12 +97,7 @@ std::string cube_glb(const std::string& nodes_and_scenes, const std::string& pri
 const std::string kOneNode = "\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}],\"scene\":0";
 
 std::string error_of(const std::string& bytes) {
-  try {
-    read_mesh(bytes);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
+  return input_error_of([&] { read_mesh(bytes); });
 }
 
 TEST(ReadGlb, TheIndexedCubeReadsAsTheOffCube) {

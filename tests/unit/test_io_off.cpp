@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "input_error.hpp"
 #include "io/read_mesh.hpp"
 #include "test_io_support.hpp"
 
@@ -20,12 +21,7 @@ Mesh read(const std::string& bytes, ReadReport* report = nullptr) {
 }
 
 std::string error_of(const std::string& bytes) {
-  try {
-    read(bytes);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
+  return input_error_of([&] { read(bytes); });
 }
 
 TEST(ReadOff, TheCubeIsTwelveTrianglesOfAreaSixAndVolumeOne) {

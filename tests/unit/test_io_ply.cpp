@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "input_error.hpp"
 #include "io/read_mesh.hpp"
 #include "test_io_support.hpp"
 
@@ -103,12 +104,7 @@ std::string cube_ply(const PlyLayout& l) {
 }
 
 std::string error_of(const std::string& bytes) {
-  try {
-    read_mesh(bytes);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
+  return input_error_of([&] { read_mesh(bytes); });
 }
 
 const Mesh& off_cube() {

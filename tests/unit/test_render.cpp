@@ -245,12 +245,13 @@ TEST(Render, NodePositionsAgreeWithTheArgBarycentres) {
     for (std::size_t i = 0; i < p.centre.size(); ++i) {
       const ArgNode& n = m.graph.nodes[m.graph.level_begin[std::size_t(level)] + i];
       const Eigen::Vector3d& c = p.centre[i];
-      EXPECT_NEAR(c.norm(), n.r, 1e-4);
+      // The ARG stores r, theta and phi in one byte each (format 3): half a step apart at most.
+      EXPECT_NEAR(c.norm(), n.r, 0.5 * 4.0 / 255 + 1e-4);
       if (c.norm() > 1e-3) {
-        EXPECT_NEAR(std::acos(c.z() / c.norm()), n.phi, 1e-3);
+        EXPECT_NEAR(std::acos(c.z() / c.norm()), n.phi, 0.5 * M_PI / 255 + 1e-4);
       }
       if (std::fabs(c.x()) > 1e-3) {
-        EXPECT_NEAR(std::atan(c.y() / c.x()), n.theta, 1e-3);
+        EXPECT_NEAR(std::atan(c.y() / c.x()), n.theta, 0.5 * M_PI / 255 + 1e-4);
       }
       EXPECT_NEAR(p.area[i], n.a * (m.graph.levels() + 1), 1e-4);
       EXPECT_EQ(p.interval[i], n.interval);
@@ -333,9 +334,9 @@ TEST(Render, SimilarityTermsAddUpToOneMinusTheGraphsSim) {
     std::vector<MatchPair> pairs;
     const double sim = graph_similarity(x->graph, y->graph, w, &pairs);
     const SimilarityTerms t = similarity_terms(x->graph, y->graph, w, pairs);
-    // SIM of a graph with itself is 0 by definition; the terms sum float histograms whose
-    // totals equal the node areas only to rounding.
-    EXPECT_NEAR(t.total(), 1 - sim, x == y ? 1e-6 : 1e-9);
+    // SIM of a graph with itself is 0 by definition; the terms sum byte-coded histograms whose
+    // totals equal the node areas only to a code (1/255 of the area, format 3).
+    EXPECT_NEAR(t.total(), 1 - sim, x == y ? 1e-3 : 1e-9);
     for (double term : {t.a, t.l, t.v, t.cords, t.curvature, t.colour}) EXPECT_GE(term, 0);
   }
   // Colour weighs nothing unless both models have colour.

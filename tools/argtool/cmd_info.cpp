@@ -36,6 +36,7 @@ nlohmann::json describe(const argtool::LoadedArg& loaded) {
   j["open"] = bool(g.summary.flags & arg::kFlagOpen);
   j["proxy"] = bool(g.summary.flags & arg::kFlagProxy);
   j["wide_open"] = bool(g.summary.flags & arg::kFlagWideOpen);
+  j["pooled_components"] = g.summary.pooled;
   j["format_version"] = g.format;
   j["options"] = arg::format_build_options(g.options);
   j["builder_version"] = g.builder_version;

@@ -30,7 +30,7 @@ def test_arg_results_load_as_the_servers_bytes(conn: psycopg.Connection[Any], bi
     send, text = conn.execute(f"SELECT arg_send(a), a::text FROM ({BUILD}) v(a)").fetchone()
     assert loaded.data == send
     assert loaded.to_text() == text
-    assert loaded.format_version == 2
+    assert loaded.format_version == 3
 
 
 @pytest.mark.parametrize("placeholder", ["%t", "%b", "%s"])

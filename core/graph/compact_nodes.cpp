@@ -1,0 +1,210 @@
+// Encoding and strict decoding of format 3's node records, neighbour lists and colour.
+#include "graph/compact_nodes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "common/errors.hpp"
+#include "graph/quantise.hpp"
+
+namespace arg {
+
+namespace {
+
+constexpr float kHalfPi = 1.57079632679f, kPi = 3.14159265359f;
+constexpr std::uint16_t kNoParent = 0xffff;
+
+void put16(std::uint8_t* at, std::uint16_t x) {
+  at[0] = std::uint8_t(x & 0xff), at[1] = std::uint8_t(x >> 8);
+}
+std::uint16_t get16(const unsigned char* at) {
+  return std::uint16_t(at[0] | at[1] << 8);
+}
+
+// The node's mu range as fractions of its interval's width.
+float interval_fraction(float mu, const ArgNode& n) {
+  return float(double(mu) * double(1u << n.level) - n.interval);
+}
+float mu_of_fraction(std::uint8_t q, const ArgNode& n) {
+  return float((n.interval + q / 255.0) / double(1u << n.level));
+}
+
+// Histograms are stored as fractions of the area the reader will see: a node whose area
+// rounds to 0 keeps empty histograms, as the reader requires.
+float stored_area(const ArgNode& n) {
+  return unit16_value(quantise_unit16(n.a));
+}
+
+// link_graph for pairs as read: (i, j) with j in i's next interval, sorted by i then j. A
+// node's neighbours below it in mu come before those above (nodes are sorted by interval), and
+// each group arrives sorted, so the lists fill in order without a sort; children likewise.
+void link_read_graph(ArgGraph& g,
+                     const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs) {
+  const std::size_t n = g.nodes.size();
+  std::vector<std::uint32_t> fill(n, 0);
+  for (const ArgNode& node : g.nodes)
+    if (node.parent >= 0) ++g.nodes[std::size_t(node.parent)].child_count;
+  for (auto [a, b] : pairs) ++g.nodes[a].adj_count, ++g.nodes[b].adj_count;
+  std::uint32_t child_at = 0, adj_at = 0;
+  for (ArgNode& node : g.nodes) {
+    node.child_begin = child_at, child_at += node.child_count, node.child_count = 0;
+    node.adj_begin = adj_at, adj_at += node.adj_count;
+  }
+  g.children.resize(child_at);
+  g.adjacency.resize(adj_at);
+  for (std::size_t i = 0; i < n; ++i)
+    if (g.nodes[i].parent >= 0) {
+      ArgNode& p = g.nodes[std::size_t(g.nodes[i].parent)];
+      g.children[p.child_begin + p.child_count++] = std::uint32_t(i);
+    }
+  // Neighbours below first: every pair's upper end, in the pairs' order (increasing lower end).
+  for (auto [a, b] : pairs) g.adjacency[g.nodes[b].adj_begin + fill[b]++] = a;
+  for (auto [a, b] : pairs) g.adjacency[g.nodes[a].adj_begin + fill[a]++] = b;
+}
+
+}  // namespace
+
+std::size_t up_neighbour_count(const ArgGraph& g, std::size_t i) {
+  const ArgNode& n = g.nodes[i];
+  std::size_t up = 0;
+  for (std::uint32_t k = 0; k < n.adj_count; ++k)
+    up += g.nodes[g.adjacency[n.adj_begin + k]].interval > n.interval;
+  return up;
+}
+
+void write_compact_nodes(const ArgGraph& g, ByteWriter& out) {
+  std::uint8_t rec[kCompactNodeSize];
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    const ArgNode& n = g.nodes[i];
+    const std::size_t up = up_neighbour_count(g, i);
+    put16(rec, n.level == 0 ? kNoParent
+                            : std::uint16_t(std::uint32_t(n.parent) - g.level_begin[n.level - 1]));
+    rec[2] = std::uint8_t(n.interval), rec[3] = std::uint8_t(std::min<std::size_t>(up, 255));
+    rec[4] = quantise_byte(interval_fraction(n.mu_min, n), 0, 1);
+    rec[5] = quantise_byte(interval_fraction(n.mu_max, n), 0, 1);
+    rec[6] = quantise_byte(n.theta, -kHalfPi, kHalfPi);
+    rec[7] = quantise_byte(n.phi, 0, kPi);
+    rec[8] = quantise_byte(n.r, 0, kMaxStoredRadius);
+    put16(rec + 9, quantise_unit16(n.a));
+    put16(rec + 11, quantise_unit16(n.l));
+    put16(rec + 13, quantise_unit16(n.v));
+    const float area = stored_area(n);
+    quantise_bins(n.cords.data(), kCordBins, area, rec + 15);
+    quantise_bins(n.curv_mean.data(), kCurvatureBins, area, rec + 15 + kCordBins);
+    quantise_bins(n.curv_gauss.data(), kCurvatureBins, area, rec + 15 + kCordBins + kCurvatureBins);
+    out.put_bytes(std::string_view(reinterpret_cast<const char*>(rec), kCompactNodeSize));
+  }
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    const ArgNode& n = g.nodes[i];
+    const std::uint32_t first = g.level_begin[n.level];
+    const std::size_t up = up_neighbour_count(g, i);
+    if (up >= 255) out.put(std::uint16_t(up - 255));
+    for (std::uint32_t k = 0; k < n.adj_count; ++k) {
+      const std::uint32_t j = g.adjacency[n.adj_begin + k];
+      if (g.nodes[j].interval > n.interval) out.put(std::uint16_t(j - first));
+    }
+  }
+}
+
+void read_compact_nodes(ByteReader& in, ArgGraph& g, std::uint32_t edges) {
+  const std::size_t count = g.nodes.size();
+  const auto* rec =
+      reinterpret_cast<const unsigned char*>(in.get_bytes(count * kCompactNodeSize).data());
+  std::vector<std::uint8_t> up(count);
+  for (std::size_t r = 0, i = 0; i < count; ++i, rec += kCompactNodeSize) {
+    while (i >= g.level_begin[r + 1]) ++r;
+    auto bad = [&](const char* what) { in.fail("node " + std::to_string(i) + ": " + what); };
+    ArgNode& n = g.nodes[i];
+    n.level = std::uint16_t(r);
+    const std::uint16_t parent = get16(rec);
+    if (r == 0) {
+      if (parent != kNoParent) bad("level-0 node has a parent");
+      n.parent = -1;
+    } else {
+      if (parent >= g.level_begin[r] - g.level_begin[r - 1]) bad("parent out of range");
+      n.parent = std::int32_t(g.level_begin[r - 1] + parent);
+    }
+    n.interval = rec[2];
+    if (n.interval >= (1u << r)) bad("interval out of range");
+    up[i] = rec[3];
+    if (rec[4] > rec[5]) bad("mu range reversed");
+    n.mu_min = mu_of_fraction(rec[4], n), n.mu_max = mu_of_fraction(rec[5], n);
+    n.theta = byte_value(rec[6], -kHalfPi, kHalfPi);
+    n.phi = byte_value(rec[7], 0, kPi);
+    n.r = byte_value(rec[8], 0, kMaxStoredRadius);
+    const std::uint16_t area = get16(rec + 9);
+    if (!canonical_bins(rec + 15, kCordBins, area) ||
+        !canonical_bins(rec + 15 + kCordBins, kCurvatureBins, area) ||
+        !canonical_bins(rec + 15 + kCordBins + kCurvatureBins, kCurvatureBins, area))
+      bad("histogram codes sum over 255, or fill a node without area");
+    n.a = unit16_value(area);
+    n.l = unit16_value(get16(rec + 11));
+    n.v = unit16_value(get16(rec + 13));
+    bins_values(rec + 15, kCordBins, n.a, n.cords.data());
+    bins_values(rec + 15 + kCordBins, kCurvatureBins, n.a, n.curv_mean.data());
+    bins_values(rec + 15 + kCordBins + kCurvatureBins, kCurvatureBins, n.a, n.curv_gauss.data());
+  }
+  // Nodes sorted by interval within a level, each a child of a node of its interval's half:
+  // what check_structure would ask, checked here so that format 3 can skip it.
+  for (std::size_t i = 1; i < count; ++i) {
+    const ArgNode &n = g.nodes[i], &before = g.nodes[i - 1];
+    if (n.level == before.level && n.interval < before.interval)
+      in.fail("node " + std::to_string(i) + ": nodes not sorted by interval");
+  }
+  for (std::size_t i = g.level_begin[1]; i < count; ++i)
+    if (g.nodes[std::size_t(g.nodes[i].parent)].interval != g.nodes[i].interval / 2)
+      in.fail("node " + std::to_string(i) + ": parent lies in another mu interval");
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  pairs.reserve(edges);
+  for (std::size_t i = 0; i < count; ++i) {
+    const ArgNode& n = g.nodes[i];
+    const std::uint32_t first = g.level_begin[n.level], size = g.level_begin[n.level + 1] - first;
+    // 255 in the record: the count goes on in a 2-byte number before the list.
+    const std::uint32_t up_count = up[i] < 255 ? up[i] : 255u + in.get<std::uint16_t>();
+    if (up_count > edges - pairs.size())
+      in.fail("node " + std::to_string(i) + ": more neighbours than the header's " +
+              std::to_string(edges));
+    std::uint32_t last = 0;
+    for (std::uint32_t k = 0; k < up_count; ++k) {
+      const std::uint32_t j = in.get<std::uint16_t>();
+      if (j >= size || g.nodes[first + j].interval != n.interval + 1u)
+        in.fail("node " + std::to_string(i) + ": neighbour " + std::to_string(j) +
+                " is not in the next interval of its level");
+      if (k > 0 && j <= last)
+        in.fail("node " + std::to_string(i) + ": neighbours not sorted or repeated");
+      last = j;
+      pairs.push_back({std::uint32_t(i), first + j});
+    }
+  }
+  if (pairs.size() != edges)
+    in.fail("nodes list " + std::to_string(pairs.size()) + " neighbours, header says " +
+            std::to_string(edges));
+  link_read_graph(g, pairs);
+}
+
+void write_compact_colour(const ArgGraph& g, ByteWriter& out) {
+  std::uint8_t rec[kCompactColourSize];
+  for (const ArgNode& n : g.nodes) {
+    for (int c = 0; c < 3; ++c)
+      quantise_bins(n.colour.data() + c * kColourBins, kColourBins, stored_area(n),
+                    rec + c * kColourBins);
+    out.put_bytes(std::string_view(reinterpret_cast<const char*>(rec), kCompactColourSize));
+  }
+}
+
+void read_compact_colour(std::string_view payload, ArgGraph& g) {
+  const auto* rec = reinterpret_cast<const unsigned char*>(payload.data());
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    ArgNode& n = g.nodes[i];
+    for (int c = 0; c < 3; ++c) {
+      if (!canonical_bins(rec + c * kColourBins, kColourBins, quantise_unit16(n.a)))
+        throw InputError("ARG: node " + std::to_string(i) +
+                         ": colour codes sum over 255, or fill a node without area");
+      bins_values(rec + c * kColourBins, kColourBins, n.a, n.colour.data() + c * kColourBins);
+    }
+    rec += kCompactColourSize;
+  }
+}
+
+}  // namespace arg

@@ -1,0 +1,91 @@
+// Format 3's codecs: every code decodes and encodes back to itself; errors stay within a step.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <random>
+
+#include "graph/quantise.hpp"
+
+namespace arg {
+namespace {
+
+TEST(Quantise, EveryTwoByteCodeComesBack) {
+  for (unsigned q = 0; q <= 65535; ++q)
+    ASSERT_EQ(quantise_unit16(unit16_value(std::uint16_t(q))), q) << q;
+  EXPECT_EQ(quantise_unit16(-1.0f), 0);
+  EXPECT_EQ(quantise_unit16(2.0f), 65535);
+  EXPECT_EQ(quantise_unit16(std::nanf("")), 0);
+  EXPECT_NEAR(unit16_value(quantise_unit16(0.123456f)), 0.123456f, 0.5 / 65535 + 1e-7);
+}
+
+TEST(Quantise, EveryByteCodeComesBackOnEveryRange) {
+  const float pi = 3.14159265359f;
+  for (auto [lo, hi] : {std::pair{0.0f, 1.0f}, std::pair{-pi / 2, pi / 2}, std::pair{0.0f, pi},
+                        std::pair{0.0f, 4.0f}})
+    for (unsigned q = 0; q <= 255; ++q) {
+      const float x = byte_value(std::uint8_t(q), lo, hi);
+      ASSERT_GE(x, lo);
+      ASSERT_LE(x, hi);
+      ASSERT_EQ(quantise_byte(x, lo, hi), q) << lo << " " << hi << " " << q;
+    }
+  EXPECT_EQ(quantise_byte(9.0f, 0, 4), 255) << "clamped";
+}
+
+TEST(Quantise, HistogramsKeepTheirTotalAndComeBack) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> uniform(0, 1);
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::array<float, 8> bins{};
+    float total = 0;
+    for (float& b : bins) b = uniform(random) < 0.3f ? 0 : uniform(random), total += b;
+    const float area = total * (trial % 2 ? 1.0f : 1e-4f);
+    for (float& b : bins) b *= area / total;
+    std::array<std::uint8_t, 8> q{}, again{};
+    quantise_bins(bins.data(), 8, area, q.data());
+    unsigned sum = 0;
+    for (auto x : q) sum += x;
+    ASSERT_EQ(sum, 255u) << "codes of a histogram that sums to its total";
+    std::array<float, 8> back{};
+    bins_values(q.data(), 8, area, back.data());
+    double back_sum = 0;
+    for (std::size_t k = 0; k < 8; ++k) {
+      back_sum += back[k];
+      ASSERT_NEAR(back[k], bins[k], area / 255.0 + 1e-9);
+    }
+    ASSERT_NEAR(back_sum, area, 1e-6 * area);
+    quantise_bins(back.data(), 8, area, again.data());
+    ASSERT_EQ(again, q) << "trial " << trial;
+  }
+  // No total, or no mass: zeros.
+  std::array<float, 8> some{0.5f, 0.5f};
+  std::array<std::uint8_t, 8> q{};
+  quantise_bins(some.data(), 8, 0.0f, q.data());
+  EXPECT_EQ(q, (std::array<std::uint8_t, 8>{}));
+}
+
+TEST(Quantise, SquareRootBlocksKeepSmallValuesAndComeBack) {
+  std::mt19937 random(11);
+  std::exponential_distribution<float> tail(200.0f);
+  for (int trial = 0; trial < 200; ++trial) {
+    std::array<float, 153> x{};
+    for (float& v : x) v = std::min(tail(random), 1.0f);
+    std::array<std::uint8_t, 153> q{}, again{};
+    const float scale = quantise_sqrt_block(x.data(), x.size(), q.data());
+    std::array<float, 153> back{};
+    sqrt_block_values(q.data(), q.size(), scale, back.data());
+    for (std::size_t k = 0; k < x.size(); ++k) {
+      // Half a step of the square root: small values get small errors.
+      const double step = 2 * std::sqrt(double(x[k]) * scale) / 255 + scale / (255.0 * 255.0);
+      ASSERT_NEAR(back[k], x[k], step) << k;
+    }
+    ASSERT_EQ(quantise_sqrt_block(back.data(), back.size(), again.data()), scale);
+    ASSERT_EQ(again, q);
+  }
+  std::array<float, 4> zeros{};
+  std::array<std::uint8_t, 4> q{};
+  EXPECT_EQ(quantise_sqrt_block(zeros.data(), 4, q.data()), 0.0f);
+}
+
+}  // namespace
+}  // namespace arg
