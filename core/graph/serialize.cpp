@@ -425,9 +425,16 @@ std::string serialize_arg(const ArgGraph& g) {
     throw InputError("ARG: a pooled graph needs format 3");
   const bool compact = g.format >= 3;
   std::uint32_t edges = 0;
-  if (compact)
+  if (compact) {
+    // Two-byte indices and the reader's bound: a graph over it is pooled first (build_arg does).
+    for (int r = 0; r <= g.levels(); ++r)
+      if (g.level_begin[std::size_t(r) + 1] - g.level_begin[std::size_t(r)] >
+          max_nodes_per_level(g.levels()))
+        throw InputError("ARG: level " + std::to_string(r) +
+                         " holds more nodes than format 3 keeps (pool_fragments first)");
     for (std::size_t i = 0; i < g.nodes.size(); ++i)
       edges += std::uint32_t(up_neighbour_count(g, i));
+  }
   ByteWriter out;
   out.put_bytes(std::string_view(kMagic, 4));
   out.put(g.format);

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "common/errors.hpp"
 #include "graph/pool_fragments.hpp"
 #include "graph/serialize.hpp"
 #include "match/similarity.hpp"
@@ -80,6 +81,10 @@ TEST(PoolFragments, EveryLevelEndsWithinTheBoundWithItsAreaKept) {
   const std::size_t bound = 60;
   ArgGraph g = fragmented(levels, 300);
   ASSERT_GT(g.level_begin[1], bound) << "300 components on level 0";
+  ArgGraph too_many = fragmented(levels, 2000);
+  EXPECT_THROW(serialize_arg(too_many), InputError) << "format 3 refuses a graph over the bound";
+  too_many.format = 2;
+  EXPECT_NO_THROW(serialize_arg(too_many)) << "format 2 has no bound";
   const ArgGraph before = g;
   const std::size_t pooled = pool_fragments(g, bound);
   EXPECT_GT(pooled, 0u);
