@@ -9,6 +9,10 @@
 #include <utility>
 #include <vector>
 
+#if defined(__linux__)
+#include <pthread.h>
+#endif
+
 #include "common/signals_blocked.hpp"
 
 namespace arg {
@@ -53,6 +57,16 @@ class Loop {
   std::exception_ptr failure_;
 };
 
+// Names the calling thread, where the system lets names be read (Linux: /proc/PID/task/*/comm),
+// so that a server's operator, and the cancel test, can tell the workers from other threads.
+void name_this_thread(const char* name) {
+#if defined(__linux__)
+  pthread_setname_np(pthread_self(), name);
+#else
+  (void)name;
+#endif
+}
+
 }  // namespace
 
 void parallel_for(std::size_t n, int threads, const std::function<void(std::size_t)>& f,
@@ -69,7 +83,10 @@ void parallel_for(std::size_t n, int threads, const std::function<void(std::size
     for (std::size_t k = 0; k < others; ++k) {
       std::thread t;
       try {
-        t = start([&loop] { loop.work(); });
+        t = start([&loop] {
+          name_this_thread(kWorkerThreadName);
+          loop.work();
+        });
       } catch (...) {
         break;  // out of threads or memory: the ones started and this one share the work
       }

@@ -18,7 +18,10 @@ namespace arg {
 // - When f throws, indices above the failing one are no longer started; once every thread has
 //   joined, the exception of the lowest failing index is rethrown here (the same one whatever
 //   the thread count, when f fails the same way each time).
+// - On Linux the threads it starts are named kWorkerThreadName (/proc/PID/task/*/comm).
 void parallel_for(std::size_t n, int threads, const std::function<void(std::size_t)>& f);
+
+inline constexpr char kWorkerThreadName[] = "arg worker";
 
 // Starts a thread running `body`, or throws (as std::thread's constructor throws
 // std::system_error). Tests give parallel_for one that fails.

@@ -123,6 +123,34 @@ signal_masks() {
   done
 }
 
+# Worker threads of backend $1 that parallel_for started (it names them "arg worker"; Linux),
+# each read once: sets workers (how many were seen) and workers_blocking (how many of them
+# blocked SIGINT). mu's workers live for one Dijkstra each, a few milliseconds, so the loop
+# reads /proc with the shell's own read and never forks; it polls until one is seen or the
+# statement has run 20 s.
+watch_workers() {
+  local task name key value tid
+  declare -A seen=()
+  workers=0 workers_blocking=0
+  while [[ $workers -lt 1 && $(($(now_ms) - started)) -lt 20000 ]]; do
+    for task in /proc/"$1"/task/*; do
+      tid=${task##*/}
+      [[ $tid == "$1" || -n ${seen[$tid]:-} ]] && continue
+      name=""
+      { read -r name < "$task/comm"; } 2>/dev/null
+      [[ $name == "arg worker" ]] || continue
+      while read -r key value; do
+        if [[ $key == SigBlk: ]]; then
+          seen[$tid]=1
+          workers=$((workers + 1))
+          workers_blocking=$((workers_blocking + ((0x$value >> 1) & 1)))
+          break
+        fi
+      done 2>/dev/null < "$task/status"
+    done
+  done
+}
+
 # pg_cancel_backend from a second session, once the statement has run for a second; with a
 # third argument "masks", the backend's threads' signal masks are read just before the cancel.
 # $prelude (if set) runs first in the same session as a statement of its own, so the second
@@ -147,14 +175,9 @@ cancelled() {  # SQL WHAT [masks]
     result 0 "pg_cancel_backend stops $what: the statement never ran for a second"
     return
   fi
-  if [[ ${3:-} == masks ]]; then  # wait (up to 20 s) for the build's worker threads to start
+  if [[ ${3:-} == masks ]]; then  # the build's workers and, then, every thread's mask
+    watch_workers "$pid"
     signal_masks "$pid"
-    local before=$threads
-    while [[ $threads -le $before && $(($(now_ms) - started)) -lt 20000 ]]; do
-      sleep 0.02
-      signal_masks "$pid"
-    done
-    workers=$((threads - before))
   fi
   cancel_at=$(now_ms)
   q -d postgres -c "SELECT pg_cancel_backend($pid)" >/dev/null
@@ -171,16 +194,14 @@ cancelled "$rank_sql" "ranking every pair of 1,000 ARGs"
 # A build on two threads in a backend that has loaded the image decoder (whose libraries start
 # threads of their own): the cancel still arrives, because only the backend's own thread takes
 # signals; every other thread blocks them.
-# The textured build is a statement of its own: the thread count is first read a second into
-# the big build (its reading and cleaning, before mu starts workers), whatever the machine's
-# load made of the textured build's time; under heavy load it was once read after mu began,
-# and no worker looked new.
+# The textured build is a statement of its own, so the second counts from the big build; its
+# workers are found by name (worker_threads), whenever mu started them.
 prelude="SET arg.max_build_threads = 2; SELECT arg_build(mesh, texture) IS NOT NULL FROM textured"
 threads_sql="SELECT arg_build(mesh, 'threads=2') IS NOT NULL FROM big_mesh"
 cancelled "$threads_sql" "a two-thread arg_build after a textured build" masks
 prelude=""
-result "$([[ $workers -ge 1 && $blocking == "$threads" && $main_blocks == 0 ]] && echo 1)" \
-  "during it ($workers worker threads seen), $blocking of the backend's $threads other threads block SIGINT, its own thread does not ($main_blocks)"
+result "$([[ $workers -ge 1 && $workers_blocking == "$workers" && $blocking == "$threads" && $main_blocks == 0 ]] && echo 1)" \
+  "during it $workers_blocking of $workers worker threads seen and $blocking of the backend's $threads other threads block SIGINT, its own thread does not ($main_blocks)"
 
 # A cancelled INSERT through the generated column leaves no row.
 timed "INSERT INTO objects (id, mesh) SELECT 1, mesh FROM big_mesh"

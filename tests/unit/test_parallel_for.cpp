@@ -167,6 +167,29 @@ TEST(ParallelFor, WorkersStartWithEverySignalBlockedAndTheCallerKeepsItsMask) {
   EXPECT_FALSE(blocks(SIGINT));
 }
 
+TEST(ParallelFor, WorkersAreNamedAndTheCallerKeepsItsName) {
+  char caller_before[32] = {0}, caller_after[32] = {0};
+  pthread_getname_np(pthread_self(), caller_before, sizeof caller_before);
+  std::mutex lock;
+  std::set<std::string> worker_names;
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<int> entered{0};
+  parallel_for(2, 2, [&](std::size_t) {
+    ++entered;
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (entered < 2 && std::chrono::steady_clock::now() < give_up)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    if (std::this_thread::get_id() == caller) return;
+    char name[32] = {0};
+    pthread_getname_np(pthread_self(), name, sizeof name);
+    const std::lock_guard<std::mutex> guard(lock);
+    worker_names.insert(name);
+  });
+  EXPECT_EQ(worker_names, std::set<std::string>{kWorkerThreadName});
+  pthread_getname_np(pthread_self(), caller_after, sizeof caller_after);
+  EXPECT_STREQ(caller_after, caller_before);
+}
+
 TEST(ParallelFor, DoesTheWorkOnTheCallingThreadWhenNoThreadStarts) {
   const std::size_t n = 200;
   Record r(n);
