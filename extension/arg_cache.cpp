@@ -103,7 +103,7 @@ const arg::ArgGraph& graph_of(GraphCacheHolder* holder, int slot, const GraphArg
   if (argument.cached) return *argument.cached;
   const std::string_view bytes = view(argument.value);
   if (!holder) {
-    scratch = arg::deserialize_arg(bytes, /*check_digest=*/false);
+    arg::deserialize_arg_into(bytes, scratch, /*check_digest=*/false);
     return scratch;
   }
   if (!holder->cache) holder->cache = new GraphCache();
@@ -119,7 +119,8 @@ const arg::ArgGraph& graph_of(GraphCacheHolder* holder, int slot, const GraphArg
   // probably repeats: keep its bytes so that later calls can compare them.
   const bool keep_bytes = same_header && !s.confirmed;
   s.valid = s.confirmed = false;
-  s.graph = arg::deserialize_arg(bytes, /*check_digest=*/false);
+  // Into the slot's graph: a ranking reads row after row, and the storage stays.
+  arg::deserialize_arg_into(bytes, s.graph, /*check_digest=*/false);
   s.toast = key;
   s.size = bytes.size();
   s.digest = digest;

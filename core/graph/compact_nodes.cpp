@@ -39,10 +39,10 @@ float stored_area(const ArgNode& n) {
 // link_graph for pairs as read: (i, j) with j in i's next interval, sorted by i then j. A
 // node's neighbours below it in mu come before those above (nodes are sorted by interval), and
 // each group arrives sorted, so the lists fill in order without a sort; children likewise.
-void link_read_graph(ArgGraph& g,
-                     const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs) {
+void link_read_graph(ArgGraph& g, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
+                     std::vector<std::uint32_t>& fill) {
   const std::size_t n = g.nodes.size();
-  std::vector<std::uint32_t> fill(n, 0);
+  fill.assign(n, 0);
   for (const ArgNode& node : g.nodes)
     if (node.parent >= 0) ++g.nodes[std::size_t(node.parent)].child_count;
   for (auto [a, b] : pairs) ++g.nodes[a].adj_count, ++g.nodes[b].adj_count;
@@ -107,16 +107,40 @@ void write_compact_nodes(const ArgGraph& g, ByteWriter& out) {
   }
 }
 
+namespace {
+
+// Buffers of one reader, reused between calls: a ranking reads row after row.
+struct ReadBuffers {
+  std::vector<std::uint8_t> up;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  std::vector<std::uint32_t> fill;
+};
+
+// The calling thread's buffers, looked up once a call (see thread_scratch in mpair.cpp).
+[[gnu::noinline]] ReadBuffers& thread_buffers() {
+  thread_local ReadBuffers b;
+  return b;
+}
+
+}  // namespace
+
 void read_compact_nodes(ByteReader& in, ArgGraph& g, std::uint32_t edges) {
+  ReadBuffers& b = thread_buffers();
+  std::vector<std::uint8_t>& up = b.up;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs = b.pairs;
   const std::size_t count = g.nodes.size();
   const auto* rec =
       reinterpret_cast<const unsigned char*>(in.get_bytes(count * kCompactNodeSize).data());
-  std::vector<std::uint8_t> up(count);
+  up.resize(count);
   for (std::size_t r = 0, i = 0; i < count; ++i, rec += kCompactNodeSize) {
     while (i >= g.level_begin[r + 1]) ++r;
     auto bad = [&](const char* what) { in.fail("node " + std::to_string(i) + ": " + what); };
     ArgNode& n = g.nodes[i];
     n.level = std::uint16_t(r);
+    // The graph may hold an earlier value's nodes: link_read_graph counts from zero, and
+    // the colour section (when there is one) fills the colour.
+    n.child_count = n.adj_count = 0;
+    if (!g.summary.has_colour) n.colour.fill(0.0f);
     const std::uint16_t parent = get16(rec);
     if (r == 0) {
       if (parent != kNoParent) bad("level-0 node has a parent");
@@ -155,7 +179,7 @@ void read_compact_nodes(ByteReader& in, ArgGraph& g, std::uint32_t edges) {
   for (std::size_t i = g.level_begin[1]; i < count; ++i)
     if (g.nodes[std::size_t(g.nodes[i].parent)].interval != g.nodes[i].interval / 2)
       in.fail("node " + std::to_string(i) + ": parent lies in another mu interval");
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  pairs.clear();
   pairs.reserve(edges);
   for (std::size_t i = 0; i < count; ++i) {
     const ArgNode& n = g.nodes[i];
@@ -180,7 +204,7 @@ void read_compact_nodes(ByteReader& in, ArgGraph& g, std::uint32_t edges) {
   if (pairs.size() != edges)
     in.fail("nodes list " + std::to_string(pairs.size()) + " neighbours, header says " +
             std::to_string(edges));
-  link_read_graph(g, pairs);
+  link_read_graph(g, pairs, b.fill);
 }
 
 void write_compact_colour(const ArgGraph& g, ByteWriter& out) {

@@ -510,11 +510,16 @@ std::string serialize_arg(const ArgGraph& g) {
   return std::move(bytes);
 }
 
-ArgGraph deserialize_arg(std::string_view bytes, bool check_digest) {
+void deserialize_arg_into(std::string_view bytes, ArgGraph& g, bool check_digest) {
   if (bytes.size() < kHeaderSize1)
     fail("value of " + std::to_string(bytes.size()) + " bytes is shorter than the header (" +
          std::to_string(kHeaderSize1) + ")");
-  ArgGraph g;
+  // Everything the reader does not overwrite goes back to its default; the vectors keep
+  // their storage.
+  g.options = BuildOptions{};
+  g.summary = ArgSummary{};
+  g.panorama.clear();
+  g.spectrum.clear();
   ByteReader in(bytes, "ARG");
   Header h = read_header(in, bytes, g, check_digest);
   g.nodes.resize(h.node_count);
@@ -533,6 +538,11 @@ ArgGraph deserialize_arg(std::string_view bytes, bool check_digest) {
   // Format 3's reader checks every link as it reads it and builds the rest consistent.
   if (h.version < 3) check_structure(g);
   g.level_begin.resize(std::size_t(g.levels()) + 2);
+}
+
+ArgGraph deserialize_arg(std::string_view bytes, bool check_digest) {
+  ArgGraph g;
+  deserialize_arg_into(bytes, g, check_digest);
   return g;
 }
 

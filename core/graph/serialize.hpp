@@ -33,6 +33,10 @@ ArgGraph stored_form(const ArgGraph& graph);
 // cannot make the reader or the matcher read out of bounds.
 ArgGraph deserialize_arg(std::string_view bytes, bool check_digest = true);
 
+// The same into `graph`, reusing its storage (a ranking reads row after row into one graph).
+// On error `graph` holds a partial value: read it again before use.
+void deserialize_arg_into(std::string_view bytes, ArgGraph& graph, bool check_digest = true);
+
 // Only the checks, no copy.
 void validate_arg_bytes(std::string_view bytes);
 
