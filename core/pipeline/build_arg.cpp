@@ -66,27 +66,13 @@ void assemble(ArgGraph& g, std::vector<std::vector<ArgNode>>& per_level, const R
       if (r > 0) n.parent += std::int32_t(g.level_begin[std::size_t(r) - 1]);
       g.nodes.push_back(n);
     }
-  // Children: each node's children in the order of the finer level.
-  std::vector<std::vector<std::uint32_t>> kids(g.nodes.size());
-  for (std::size_t i = g.level_begin[1]; i < g.nodes.size(); ++i)
-    kids[std::size_t(g.nodes[i].parent)].push_back(std::uint32_t(i));
-  std::vector<std::vector<std::uint32_t>> adj(g.nodes.size());
+  // Each level's edges as global indices; link_graph derives the children from the parents.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
   for (int r = 0; r <= levels; ++r)
-    for (auto [a, b] : reeb.levels[std::size_t(r)].edges) {
-      std::uint32_t ga = g.level_begin[std::size_t(r)] + std::uint32_t(a),
-                    gb = g.level_begin[std::size_t(r)] + std::uint32_t(b);
-      adj[ga].push_back(gb), adj[gb].push_back(ga);
-    }
-  g.children.clear(), g.adjacency.clear();
-  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
-    g.nodes[i].child_begin = std::uint32_t(g.children.size());
-    g.nodes[i].child_count = std::uint32_t(kids[i].size());
-    g.children.insert(g.children.end(), kids[i].begin(), kids[i].end());
-    std::sort(adj[i].begin(), adj[i].end());
-    g.nodes[i].adj_begin = std::uint32_t(g.adjacency.size());
-    g.nodes[i].adj_count = std::uint32_t(adj[i].size());
-    g.adjacency.insert(g.adjacency.end(), adj[i].begin(), adj[i].end());
-  }
+    for (auto [a, b] : reeb.levels[std::size_t(r)].edges)
+      edges.push_back({g.level_begin[std::size_t(r)] + std::uint32_t(a),
+                       g.level_begin[std::size_t(r)] + std::uint32_t(b)});
+  link_graph(g, edges);
 }
 
 }  // namespace
