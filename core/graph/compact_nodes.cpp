@@ -65,22 +65,23 @@ void link_read_graph(ArgGraph& g, const std::vector<std::pair<std::uint32_t, std
 
 }  // namespace
 
-std::size_t up_neighbour_count(const ArgGraph& g, std::size_t i) {
-  const ArgNode& n = g.nodes[i];
-  std::size_t up = 0;
-  for (std::uint32_t k = 0; k < n.adj_count; ++k)
-    up += g.nodes[g.adjacency[n.adj_begin + k]].interval > n.interval;
+std::vector<std::uint32_t> up_neighbour_counts(const ArgGraph& g) {
+  std::vector<std::uint32_t> up(g.nodes.size(), 0);
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    const ArgNode& n = g.nodes[i];
+    for (std::uint32_t k = 0; k < n.adj_count; ++k)
+      up[i] += g.nodes[g.adjacency[n.adj_begin + k]].interval > n.interval;
+  }
   return up;
 }
 
-void write_compact_nodes(const ArgGraph& g, ByteWriter& out) {
+void write_compact_nodes(const ArgGraph& g, const std::vector<std::uint32_t>& up, ByteWriter& out) {
   std::uint8_t rec[kCompactNodeSize];
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
     const ArgNode& n = g.nodes[i];
-    const std::size_t up = up_neighbour_count(g, i);
     put16(rec, n.level == 0 ? kNoParent
                             : std::uint16_t(std::uint32_t(n.parent) - g.level_begin[n.level - 1]));
-    rec[2] = std::uint8_t(n.interval), rec[3] = std::uint8_t(std::min<std::size_t>(up, 255));
+    rec[2] = std::uint8_t(n.interval), rec[3] = std::uint8_t(std::min<std::uint32_t>(up[i], 255));
     rec[4] = quantise_byte(interval_fraction(n.mu_min, n), 0, 1);
     rec[5] = quantise_byte(interval_fraction(n.mu_max, n), 0, 1);
     rec[6] = quantise_byte(n.theta, -kHalfPi, kHalfPi);
@@ -98,8 +99,7 @@ void write_compact_nodes(const ArgGraph& g, ByteWriter& out) {
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
     const ArgNode& n = g.nodes[i];
     const std::uint32_t first = g.level_begin[n.level];
-    const std::size_t up = up_neighbour_count(g, i);
-    if (up >= 255) out.put(std::uint16_t(up - 255));
+    if (up[i] >= 255) out.put(std::uint16_t(up[i] - 255));
     for (std::uint32_t k = 0; k < n.adj_count; ++k) {
       const std::uint32_t j = g.adjacency[n.adj_begin + k];
       if (g.nodes[j].interval > n.interval) out.put(std::uint16_t(j - first));

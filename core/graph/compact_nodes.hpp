@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
+#include <vector>
 
 #include "common/byte_io.hpp"
 #include "graph/arg_graph.hpp"
@@ -19,14 +20,15 @@ inline constexpr std::size_t kCompactColourSize = 3 * kColourBins;  // per node,
 // The barycentre's radius is stored up to 4 RMS radii (matching reads it up to 2).
 inline constexpr float kMaxStoredRadius = 4.0f;
 
-// Neighbours in the next interval of node i (the records' third byte), which counts each
-// undirected edge once.
-std::size_t up_neighbour_count(const ArgGraph& g, std::size_t i);
+// Per node, its neighbours in the next interval (the records' third byte): each undirected
+// edge is counted once, at its lower end.
+std::vector<std::uint32_t> up_neighbour_counts(const ArgGraph& g);
 
 // Every record, then every node's neighbours in the next interval as indices in their level
-// (a node with 255 or more has the count beyond 255 in 2 bytes before its list). Expects a
-// level of at most 65,535 nodes (pool_fragments bounds them far lower).
-void write_compact_nodes(const ArgGraph& g, ByteWriter& out);
+// (a node with 255 or more has the count beyond 255 in 2 bytes before its list). `up` is
+// up_neighbour_counts(g). Expects a level of at most 65,535 nodes (pool_fragments bounds them
+// far lower).
+void write_compact_nodes(const ArgGraph& g, const std::vector<std::uint32_t>& up, ByteWriter& out);
 
 // Reads `g.nodes.size()` records and `edges` neighbour indices, checking every field against
 // the level table (already checked), and links the graph. Throws InputError.

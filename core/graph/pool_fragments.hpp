@@ -14,6 +14,10 @@ inline constexpr std::size_t kMaxGraphNodes = 3840;
 // Nodes (and edges) one level of a graph with `levels` levels may hold.
 std::size_t max_nodes_per_level(int levels);
 
+// The first level of `g` holding more nodes than max_nodes_per_level, or -1 when none does
+// (format 3's reader and writer both hold a graph to it). Expects a consistent level table.
+int level_over_node_bound(const ArgGraph& g);
+
 // A soup of thousands of loose parts has a node per part on every level: tens of thousands of
 // nodes that cost size and matching time and say little one by one. When a level holds more
 // than `per_level` nodes or edges, the connected components (the level-0 nodes and their

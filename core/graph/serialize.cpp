@@ -241,10 +241,9 @@ void check_level_table(const ArgGraph& g) {
   }
   if (g.level_begin[levels + 1] != n) fail("level table does not cover every node");
   if (g.format >= 3)
-    for (int r = 0; r <= levels; ++r)
-      if (g.level_begin[r + 1] - g.level_begin[r] > max_nodes_per_level(levels))
-        fail("level " + std::to_string(r) + " holds more than " +
-             std::to_string(max_nodes_per_level(levels)) + " nodes");
+    if (const int r = level_over_node_bound(g); r >= 0)
+      fail("level " + std::to_string(r) + " holds more than " +
+           std::to_string(max_nodes_per_level(levels)) + " nodes");
 }
 
 // Structural checks: levels, ordering, parent/child links both ways, adjacency symmetry.
@@ -425,15 +424,14 @@ std::string serialize_arg(const ArgGraph& g) {
     throw InputError("ARG: a pooled graph needs format 3");
   const bool compact = g.format >= 3;
   std::uint32_t edges = 0;
+  std::vector<std::uint32_t> up;  // format 3: each node's neighbours in the next interval
   if (compact) {
     // Two-byte indices and the reader's bound: a graph over it is pooled first (build_arg does).
-    for (int r = 0; r <= g.levels(); ++r)
-      if (g.level_begin[std::size_t(r) + 1] - g.level_begin[std::size_t(r)] >
-          max_nodes_per_level(g.levels()))
-        throw InputError("ARG: level " + std::to_string(r) +
-                         " holds more nodes than format 3 keeps (pool_fragments first)");
-    for (std::size_t i = 0; i < g.nodes.size(); ++i)
-      edges += std::uint32_t(up_neighbour_count(g, i));
+    if (const int r = level_over_node_bound(g); r >= 0)
+      throw InputError("ARG: level " + std::to_string(r) +
+                       " holds more nodes than format 3 keeps (pool_fragments first)");
+    up = up_neighbour_counts(g);
+    for (std::uint32_t count : up) edges += count;
   }
   ByteWriter out;
   out.put_bytes(std::string_view(kMagic, 4));
@@ -462,7 +460,7 @@ std::string serialize_arg(const ArgGraph& g) {
   if (compact) {
     out.put(std::uint16_t(g.summary.pooled));
     out.put(std::uint16_t(0));
-    write_compact_nodes(g, out);
+    write_compact_nodes(g, up, out);
   } else {
     for (const ArgNode& node : g.nodes) for_each_field(node, [&](auto x) { out.put(x); });
     for (auto c : g.children) out.put(c);
