@@ -21,7 +21,7 @@ set(ARG_METHOD_SOURCES
     mesh/clean_mesh.cpp mesh/collapse_short_edges.cpp mesh/connected_components.cpp
     mesh/distance_field.cpp mesh/fill_holes.cpp mesh/marching_tetrahedra.cpp mesh/mesh_edges.cpp
     mesh/normal_pose.cpp mesh/normalize_pose.cpp mesh/surface_area.cpp mesh/taubin_smoothing.cpp
-    mesh/watertight_proxy.cpp
+    mesh/stitch_pieces.cpp mesh/watertight_proxy.cpp
     mu/dijkstra.cpp mu/geodesic_integral.cpp mu/mu_function.cpp mu/surface_graph.cpp
     reeb/reeb_levels.cpp reeb/slice_intervals.cpp
     features/curvature.cpp features/depth_buffer_descriptor.cpp features/depth_images.cpp

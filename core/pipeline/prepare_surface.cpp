@@ -2,14 +2,133 @@
 #include "pipeline/prepare_surface.hpp"
 
 #include <cmath>
+#include <numeric>
 
 #include "common/errors.hpp"
 #include "mesh/connected_components.hpp"
 #include "mesh/fill_holes.hpp"
+#include "mesh/stitch_pieces.hpp"
 #include "mesh/surface_area.hpp"
 #include "mesh/watertight_proxy.hpp"
 
 namespace arg {
+
+namespace {
+
+// Area of each component (vertex_components' numbering: by decreasing area).
+std::vector<double> component_areas(const Mesh& mesh, const std::vector<int>& component,
+                                    std::size_t count) {
+  std::vector<double> area(count, 0.0);
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
+    area[std::size_t(component[std::size_t(mesh.F(f, 0))])] +=
+        0.5 * (mesh.V.row(mesh.F(f, 1)) - mesh.V.row(mesh.F(f, 0)))
+                  .cross(mesh.V.row(mesh.F(f, 2)) - mesh.V.row(mesh.F(f, 0)))
+                  .norm();
+  return area;
+}
+
+// Cleans a mesh made from a cleaned one; the counts of what was merged and dropped add up, the
+// rest (boundary, non-manifold edges) describe the new mesh.
+Mesh clean_again(const Mesh& mesh, CleanReport& report, const StopRequested& stop) {
+  CleanReport again;
+  Mesh out = clean_mesh(mesh, &again, stop);
+  again.welded_vertices += report.welded_vertices;
+  again.unused_vertices += report.unused_vertices;
+  again.dropped_degenerate += report.dropped_degenerate;
+  again.dropped_duplicate += report.dropped_duplicate;
+  report = again;
+  return out;
+}
+
+// Gaps narrower than this share of the bounding box's diagonal are tears, not space between
+// parts: a cut that leaves its sides a fraction of a percent apart (perturb's split moves them
+// 0.2% each), a scan's patches that stop short of each other.
+constexpr double kTearGap = 0.01;
+// A torn surface whose largest piece holds this share of the area is that piece: the rest are
+// bits a hole cut off (a fingertip, the end of a tail), which mu would otherwise reach only
+// through the proxy that rounds the shape's thin parts away.
+constexpr double kMainPiece = 0.9;
+
+// The faces of component 0 (clean_mesh then drops the vertices no kept face uses).
+Mesh main_piece(const Mesh& mesh, const std::vector<int>& component) {
+  Mesh main;
+  main.V = mesh.V;
+  Eigen::Index faces = 0;
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
+    faces += component[std::size_t(mesh.F(f, 0))] == 0;
+  main.F.resize(faces, 3);
+  if (mesh.has_colour()) main.C.resize(faces, 3);
+  Eigen::Index at = 0;
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
+    if (component[std::size_t(mesh.F(f, 0))] == 0) {
+      main.F.row(at) = mesh.F.row(f);
+      if (mesh.has_colour()) main.C.row(at) = mesh.C.row(f);
+      ++at;
+    }
+  return main;
+}
+
+double boundary_length(const Mesh& mesh, const MeshEdges& edges) {
+  double length = 0;
+  for (int e = 0; e < edges.count(); ++e)
+    if (edges.faces(e) == 1) length += (mesh.V.row(edges.v0[e]) - mesh.V.row(edges.v1[e])).norm();
+  return length;
+}
+
+// A piece that is wide open (a boundary longer than 4 sqrt(area), PreparedSurface::wide_open)
+// is a sheet, not a torn closed shape.
+bool wide_open(double boundary, double area) {
+  return boundary > 4.0 * std::sqrt(area);
+}
+
+// A manifold surface in open pieces (holes=fill): rims facing each other across a narrow gap are
+// stitched, and when one piece then holds nearly all the area the others are set aside. Taken
+// only when that leaves one closed-but-for-holes surface (specks under 1% aside, not wide open):
+// a soup of open panels that stitching only partly joins, or joins into a sheet, stays as it
+// was given and goes to the proxy. A model of closed parts (no rim) is never touched.
+void join_torn_pieces(Mesh& mesh, std::vector<int>& component, PreparedSurface& out,
+                      const StopRequested& stop) {
+  if (out.components < 2 || out.clean.nonmanifold_edges > 0 || out.clean.boundary_edges == 0)
+    return;
+  const double diagonal = (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).norm();
+  Mesh joined = mesh;
+  CleanReport report = out.clean;
+  std::vector<int> piece = component;
+  std::size_t pieces = out.components, pairs = 0, set_aside = 0;
+  const Mesh moved =
+      stitch_pieces(mesh, mesh_edges(mesh.F), component, kTearGap * diagonal, &pairs);
+  if (pairs > 0) {
+    joined = clean_again(moved, report, stop);
+    // A stitch that pinched a few rims together (a rim vertex snapped where two sides met)
+    // leaves a handful of fins: their faces go, and the small holes are filled below.
+    if (report.nonmanifold_edges > 0) {
+      const MeshEdges edges = mesh_edges(joined.F);
+      if (report.nonmanifold_edges * 1000 <= std::size_t(edges.count()))
+        joined = clean_again(without_nonmanifold_faces(joined, edges), report, stop);
+    }
+    if (report.nonmanifold_edges > 0) return;
+    pieces = std::size_t(vertex_components(joined, piece));
+  }
+  std::vector<double> area = component_areas(joined, piece, pieces);
+  double total = std::accumulate(area.begin(), area.end(), 0.0);
+  if (pieces > 1 && area[0] >= kMainPiece * total && area[1] >= 0.01 * total) {
+    set_aside = pieces - 1;
+    joined = clean_again(main_piece(joined, piece), report, stop);
+    pieces = std::size_t(vertex_components(joined, piece));
+    area = component_areas(joined, piece, pieces);
+    total = std::accumulate(area.begin(), area.end(), 0.0);
+  }
+  if (pieces > 1 && area[1] >= 0.01 * total) return;
+  if (wide_open(boundary_length(joined, mesh_edges(joined.F)), total)) return;
+  mesh = std::move(joined);
+  component = std::move(piece);
+  out.clean = report;
+  out.components = pieces;
+  out.stitched_pairs = pairs;
+  out.set_aside_pieces = set_aside;
+}
+
+}  // namespace
 
 PreparedSurface prepare_surface(const Mesh& input, const BuildOptions& options,
                                 const StopRequested& stop) {
@@ -19,30 +138,24 @@ PreparedSurface prepare_surface(const Mesh& input, const BuildOptions& options,
   // ratios below are the same before and after the pose.
   std::vector<int> component;
   out.components = std::size_t(vertex_components(mesh, component));
+  if (options.holes == HoleKind::Fill) join_torn_pieces(mesh, component, out, stop);
   // Components are numbered by decreasing area: the second one tells whether the surface is
   // in pieces or merely carries specks.
-  double second = 0, total = 0;
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-    const double a = 0.5 * (mesh.V.row(mesh.F(f, 1)) - mesh.V.row(mesh.F(f, 0)))
-                               .cross(mesh.V.row(mesh.F(f, 2)) - mesh.V.row(mesh.F(f, 0)))
-                               .norm();
-    total += a;
-    if (component[std::size_t(mesh.F(f, 0))] == 1) second += a;
-  }
+  const std::vector<double> piece_area = component_areas(mesh, component, out.components);
+  const double total = std::accumulate(piece_area.begin(), piece_area.end(), 0.0);
+  const double second = piece_area.size() > 1 ? piece_area[1] : 0.0;
   // The pose moves vertices and at most turns faces over (below): these edges serve the posed
   // mesh too (recomputed if holes are filled, which adds faces).
   out.posed_edges = mesh_edges(mesh.F);
   const MeshEdges& edges = out.posed_edges;
-  double boundary = 0;
-  for (int e = 0; e < edges.count(); ++e)
-    if (edges.faces(e) == 1) boundary += (mesh.V.row(edges.v0[e]) - mesh.V.row(edges.v1[e])).norm();
+  const double boundary = boundary_length(mesh, edges);
   const bool broken =
       second >= 0.01 * total || out.clean.nonmanifold_edges * 1000 > std::size_t(edges.count());
   out.use_proxy =
       options.surface == SurfaceKind::Proxy || (options.surface == SurfaceKind::Auto && broken);
   // Holes alone do not call for the proxy: a manifold surface in one piece gets its holes
   // closed (fill_holes.hpp), unless it is wide open (a sheet: no closed shape to restore).
-  const bool wide = boundary > 4.0 * std::sqrt(total);
+  const bool wide = wide_open(boundary, total);
   if (options.holes == HoleKind::Fill && !out.use_proxy && boundary > 0 && !wide &&
       out.clean.nonmanifold_edges == 0) {
     FillReport filled;

@@ -16,11 +16,13 @@ namespace arg {
 struct PreparedSurface {
   CleanReport clean;
   Pose pose;
-  std::size_t components = 0;    // connected components of the cleaned mesh
-  double boundary_length = 0;    // of its boundary edges (before any was filled), posed units
-  double area = 0;               // of `posed`
-  bool use_proxy = false;        // mu and the graph run on `proxy`
-  std::size_t filled_loops = 0;  // holes closed by fill_holes (options.holes=fill)
+  std::size_t components = 0;        // connected components of the cleaned (and joined) mesh
+  double boundary_length = 0;        // of its boundary edges (before any was filled), posed units
+  double area = 0;                   // of `posed`
+  bool use_proxy = false;            // mu and the graph run on `proxy`
+  std::size_t filled_loops = 0;      // holes closed by fill_holes (options.holes=fill)
+  std::size_t stitched_pairs = 0;    // rim vertices joined across tears (holes=fill)
+  std::size_t set_aside_pieces = 0;  // small pieces of a torn surface left out (holes=fill)
   Mesh posed;  // the cleaned mesh (holes filled), centred, aligned and scaled (apply_pose)
   MeshEdges posed_edges;      // its edges
   std::optional<Mesh> proxy;  // its watertight proxy, when options.surface chose one
@@ -34,10 +36,11 @@ struct PreparedSurface {
   const Mesh& surface() const { return proxy ? *proxy : posed; }
 };
 
-// Cleans `input`, closes the holes of a manifold surface in one piece that is not wide open
-// (holes=fill), normalises its pose and, for surface=proxy (or auto on a mesh in pieces or with
-// non-manifold edges: build_options.hpp), makes its proxy in the same frame. Throws InputError
-// for a mesh without area.
+// Cleans `input`; with holes=fill, joins a manifold surface torn into open pieces (rims stitched
+// across gaps under 1% of its size; a piece holding 90% of the area kept alone) and closes the
+// holes of a manifold surface in one piece that is not wide open; normalises its pose and, for
+// surface=proxy (or auto on a mesh in pieces or with non-manifold edges: build_options.hpp), makes
+// its proxy in the same frame. Throws InputError for a mesh without area.
 PreparedSurface prepare_surface(const Mesh& input, const BuildOptions& options,
                                 const StopRequested& stop = {});
 
