@@ -94,6 +94,9 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
   rep.boundary_edges = clean.boundary_edges;
   rep.nonmanifold_edges = clean.nonmanifold_edges;
   rep.components = prepared.components;
+  rep.stitched_pairs = prepared.stitched_pairs;
+  rep.set_aside_pieces = prepared.set_aside_pieces;
+  rep.filled_loops = prepared.filled_loops;
   rep.proxy = prepared.proxy.has_value();
   rep.ms.clean = clock.lap();
   const Mesh& mesh = prepared.surface();

@@ -27,8 +27,9 @@ std::vector<double> component_areas(const Mesh& mesh, const std::vector<int>& co
   return area;
 }
 
-// Cleans a mesh made from a cleaned one; the counts of what was merged and dropped add up, the
-// rest (boundary, non-manifold edges) describe the new mesh.
+// Cleans a mesh made from a cleaned one; the counts of what was merged and dropped add up, and
+// boundary_edges stays the input's (the open flag says the input was open, as when holes are
+// filled); the rest (non-manifold edges, flips) describe the new mesh.
 Mesh clean_again(const Mesh& mesh, CleanReport& report, const StopRequested& stop) {
   CleanReport again;
   Mesh out = clean_mesh(mesh, &again, stop);
@@ -36,6 +37,7 @@ Mesh clean_again(const Mesh& mesh, CleanReport& report, const StopRequested& sto
   again.unused_vertices += report.unused_vertices;
   again.dropped_degenerate += report.dropped_degenerate;
   again.dropped_duplicate += report.dropped_duplicate;
+  again.boundary_edges = report.boundary_edges;
   report = again;
   return out;
 }

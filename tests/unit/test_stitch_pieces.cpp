@@ -100,6 +100,7 @@ TEST(StitchPieces, ASplitScanIsOneSurfaceForMuNotAProxy) {
   EXPECT_GT(prepared.stitched_pairs, 0u);
   EXPECT_EQ(prepared.components, 1u);
   EXPECT_FALSE(prepared.use_proxy);
+  EXPECT_GT(prepared.clean.boundary_edges, 0u) << "the input was open: the flag says so";
   // holes=keep asks for the surface as given: in pieces, so the proxy.
   BuildOptions keep;
   keep.holes = HoleKind::Keep;
