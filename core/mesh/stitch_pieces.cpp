@@ -1,11 +1,12 @@
-// Mutual-nearest pairing of rim vertices across pieces on a hashed grid of the tolerance's size.
+// Mutual-nearest pairing of rim vertices across pieces, found on a grid of the tolerance's size.
 #include "mesh/stitch_pieces.hpp"
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 #include <map>
+
+#include "mesh/face_subset.hpp"
 
 namespace arg {
 
@@ -34,24 +35,28 @@ Mesh stitch_pieces(const Mesh& mesh, const MeshEdges& edges, const std::vector<i
       grid[cell_of(v)].push_back(int(v));
     }
   if (rim.empty()) return out;
-  std::vector<int> nearest(std::size_t(mesh.V.rows()), -1);
   const double limit = tolerance * tolerance;
-  for (int v : rim) {
+  // The nearest rim vertex of another piece within the tolerance that `eligible` accepts, -1
+  // when none; ties go to the lower index.
+  auto nearest_across = [&](int v, auto eligible) {
     const Cell c = cell_of(v);
     double best = std::numeric_limits<double>::infinity();
+    int found = -1;
     for (long long dx = -1; dx <= 1; ++dx)
       for (long long dy = -1; dy <= 1; ++dy)
         for (long long dz = -1; dz <= 1; ++dz) {
           auto it = grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
           if (it == grid.end()) continue;
           for (int w : it->second) {
-            if (component[std::size_t(w)] == component[std::size_t(v)]) continue;
+            if (component[std::size_t(w)] == component[std::size_t(v)] || !eligible(w)) continue;
             const double d = (mesh.V.row(w) - mesh.V.row(v)).squaredNorm();
-            if (d <= limit && (d < best || (d == best && w < nearest[std::size_t(v)])))
-              best = d, nearest[std::size_t(v)] = w;
+            if (d <= limit && (d < best || (d == best && w < found))) best = d, found = w;
           }
         }
-  }
+    return found;
+  };
+  std::vector<int> nearest(std::size_t(mesh.V.rows()), -1);
+  for (int v : rim) nearest[std::size_t(v)] = nearest_across(v, [](int) { return true; });
   std::vector<char> paired(std::size_t(mesh.V.rows()), 0);
   for (int v : rim) {
     const int w = nearest[std::size_t(v)];
@@ -68,45 +73,19 @@ Mesh stitch_pieces(const Mesh& mesh, const MeshEdges& edges, const std::vector<i
   // Only left-over vertices move, onto points that stay: no chains along a seam.
   for (int v : rim) {
     if (paired[std::size_t(v)]) continue;
-    const Cell c = cell_of(v);
-    double best = std::numeric_limits<double>::infinity();
-    int target = -1;
-    for (long long dx = -1; dx <= 1; ++dx)
-      for (long long dy = -1; dy <= 1; ++dy)
-        for (long long dz = -1; dz <= 1; ++dz) {
-          auto it = grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
-          if (it == grid.end()) continue;
-          for (int w : it->second) {
-            if (!paired[std::size_t(w)] || component[std::size_t(w)] == component[std::size_t(v)])
-              continue;
-            const double d = (mesh.V.row(w) - mesh.V.row(v)).squaredNorm();
-            if (d <= limit && (d < best || (d == best && w < target))) best = d, target = w;
-          }
-        }
+    const int target = nearest_across(v, [&](int w) { return paired[std::size_t(w)] != 0; });
     if (target >= 0) out.V.row(v) = out.V.row(target);
   }
   return out;
 }
 
 Mesh without_nonmanifold_faces(const Mesh& mesh, const MeshEdges& edges) {
-  std::vector<char> drop(std::size_t(mesh.F.rows()), 0);
+  std::vector<char> keep(std::size_t(mesh.F.rows()), 1);
   for (int e = 0; e < edges.count(); ++e)
     if (edges.faces(e) > 2)
       for (int k = edges.face_begin[std::size_t(e)]; k < edges.face_begin[std::size_t(e) + 1]; ++k)
-        drop[std::size_t(edges.face_of[std::size_t(k)])] = 1;
-  Mesh out;
-  out.V = mesh.V;
-  const Eigen::Index kept = Eigen::Index(std::count(drop.begin(), drop.end(), 0));
-  out.F.resize(kept, 3);
-  if (mesh.has_colour()) out.C.resize(kept, 3);
-  Eigen::Index at = 0;
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
-    if (!drop[std::size_t(f)]) {
-      out.F.row(at) = mesh.F.row(f);
-      if (mesh.has_colour()) out.C.row(at) = mesh.C.row(f);
-      ++at;
-    }
-  return out;
+        keep[std::size_t(edges.face_of[std::size_t(k)])] = 0;
+  return face_subset(mesh, keep);
 }
 
 }  // namespace arg

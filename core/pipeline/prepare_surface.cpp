@@ -6,6 +6,7 @@
 
 #include "common/errors.hpp"
 #include "mesh/connected_components.hpp"
+#include "mesh/face_subset.hpp"
 #include "mesh/fill_holes.hpp"
 #include "mesh/stitch_pieces.hpp"
 #include "mesh/surface_area.hpp"
@@ -53,21 +54,10 @@ constexpr double kMainPiece = 0.9;
 
 // The faces of component 0 (clean_mesh then drops the vertices no kept face uses).
 Mesh main_piece(const Mesh& mesh, const std::vector<int>& component) {
-  Mesh main;
-  main.V = mesh.V;
-  Eigen::Index faces = 0;
+  std::vector<char> keep(std::size_t(mesh.F.rows()));
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
-    faces += component[std::size_t(mesh.F(f, 0))] == 0;
-  main.F.resize(faces, 3);
-  if (mesh.has_colour()) main.C.resize(faces, 3);
-  Eigen::Index at = 0;
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
-    if (component[std::size_t(mesh.F(f, 0))] == 0) {
-      main.F.row(at) = mesh.F.row(f);
-      if (mesh.has_colour()) main.C.row(at) = mesh.C.row(f);
-      ++at;
-    }
-  return main;
+    keep[std::size_t(f)] = component[std::size_t(mesh.F(f, 0))] == 0;
+  return face_subset(mesh, keep);
 }
 
 double boundary_length(const Mesh& mesh, const MeshEdges& edges) {

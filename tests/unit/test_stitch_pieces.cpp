@@ -44,6 +44,18 @@ Mesh cut_apart(const Mesh& m, double cut, double gap) {
   return out;
 }
 
+// Two closed unit spheres, centres `apart` along x.
+Mesh two_spheres(double apart) {
+  const Mesh a = test::icosphere(2);
+  Mesh two;
+  two.V.resize(2 * a.V.rows(), 3);
+  two.V << a.V, a.V;
+  two.V.bottomRows(a.V.rows()).col(0).array() += apart;
+  two.F.resize(2 * a.F.rows(), 3);
+  two.F << a.F, a.F.array() + int(a.V.rows());
+  return two;
+}
+
 TEST(StitchPieces, ASphereCutInTwoBecomesTheClosedSphereAgain) {
   const Mesh sphere = test::icosphere(3);
   const Pieces torn = cleaned(cut_apart(sphere, 0.1, 0.004));
@@ -73,13 +85,7 @@ TEST(StitchPieces, GapsWiderThanTheToleranceStayOpen) {
 TEST(StitchPieces, ClosedPartsAndARimOfOnePieceAreLeftAlone) {
   // Two closed spheres nearly touching: no rim, nothing to stitch.
   const Mesh a = test::icosphere(2);
-  Mesh two;
-  two.V.resize(2 * a.V.rows(), 3);
-  two.V << a.V, a.V;
-  two.V.bottomRows(a.V.rows()).col(0).array() += 2.001;
-  two.F.resize(2 * a.F.rows(), 3);
-  two.F << a.F, a.F.array() + int(a.V.rows());
-  const Pieces closed = cleaned(two);
+  const Pieces closed = cleaned(two_spheres(2.001));
   ASSERT_EQ(closed.count, 2);
   std::size_t pairs = 1;
   stitch_pieces(closed.mesh, mesh_edges(closed.mesh.F), closed.component, 0.05, &pairs);
@@ -130,14 +136,7 @@ TEST(StitchPieces, AHoleThatCutsATipOffKeepsTheMainPiece) {
 }
 
 TEST(StitchPieces, AModelOfTwoClosedPartsStillGoesToTheProxy) {
-  const Mesh a = test::icosphere(2);
-  Mesh two;
-  two.V.resize(2 * a.V.rows(), 3);
-  two.V << a.V, a.V;
-  two.V.bottomRows(a.V.rows()).col(0).array() += 3;
-  two.F.resize(2 * a.F.rows(), 3);
-  two.F << a.F, a.F.array() + int(a.V.rows());
-  const PreparedSurface prepared = prepare_surface(two, BuildOptions{});
+  const PreparedSurface prepared = prepare_surface(two_spheres(3), BuildOptions{});
   EXPECT_EQ(prepared.stitched_pairs, 0u);
   EXPECT_EQ(prepared.set_aside_pieces, 0u);
   EXPECT_EQ(prepared.components, 2u);
