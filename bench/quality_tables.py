@@ -40,8 +40,10 @@ for m in re.finditer(r"training \(all sets\)\s+(\S+)\s+NN ([0-9.]+)\s+FT ([0-9.]
     train[m.group(1)] = [float(m.group(k)) for k in range(2, 7)]
 
 print(f"Machine: {cpu()}, {os.cpu_count()} cores. Every model of a set queries all the others "
-      "(PSB measures); a model that fails to build stays in as a query that finds nothing. "
-      "Build times: one thread, in process, medians; compare: median per pair.\n")
+      "(PSB measures); a model that fails to build stays in as a query that finds nothing. " +
+      ("Build times: one thread" if os.environ.get("THREADS", "1") == "1"
+       else "Build times: " + os.environ["THREADS"] + " threads sharing the machine") +
+      ", in process, medians; compare: median per pair.\n")
 print("| set | method | NN | FT | ST | E | DCG | mAP | build ms | compare us | failed |")
 print("|---|---|---|---|---|---|---|---|---|---|---|")
 for s in sets:
