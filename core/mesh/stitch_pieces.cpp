@@ -11,7 +11,7 @@
 namespace arg {
 
 Mesh stitch_pieces(const Mesh& mesh, const MeshEdges& edges, const std::vector<int>& component,
-                   double tolerance, std::size_t* pairs) {
+                   double tolerance, std::size_t* pairs, const StopRequested& stop) {
   Mesh out = mesh;
   if (pairs) *pairs = 0;
   if (!(tolerance > 0)) return out;
@@ -56,7 +56,10 @@ Mesh stitch_pieces(const Mesh& mesh, const MeshEdges& edges, const std::vector<i
     return found;
   };
   std::vector<int> nearest(std::size_t(mesh.V.rows()), -1);
-  for (int v : rim) nearest[std::size_t(v)] = nearest_across(v, [](int) { return true; });
+  for (std::size_t k = 0; k < rim.size(); ++k) {
+    if ((k & 4095) == 0) check_interrupt(stop);
+    nearest[std::size_t(rim[k])] = nearest_across(rim[k], [](int) { return true; });
+  }
   std::vector<char> paired(std::size_t(mesh.V.rows()), 0);
   for (int v : rim) {
     const int w = nearest[std::size_t(v)];
@@ -71,6 +74,7 @@ Mesh stitch_pieces(const Mesh& mesh, const MeshEdges& edges, const std::vector<i
   // A rim vertex left over (its nearest chose another) would leave a slit between two joined
   // points: it goes onto the nearest joined point across the gap, collapsing its short rim edge.
   // Only left-over vertices move, onto points that stay: no chains along a seam.
+  check_interrupt(stop);
   for (int v : rim) {
     if (paired[std::size_t(v)]) continue;
     const int target = nearest_across(v, [&](int w) { return paired[std::size_t(w)] != 0; });

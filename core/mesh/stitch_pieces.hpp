@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "common/limits.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/mesh_edges.hpp"
 
@@ -20,8 +21,9 @@ namespace arg {
 // one surface again; parts that merely come near each other inside a soup are left alone
 // unless both have an open rim there. `pairs` (optional) receives the number of pairs moved.
 // Deterministic (ties go to the lower vertex index).
+// Polls `stop` as it goes.
 Mesh stitch_pieces(const Mesh& mesh, const MeshEdges& edges, const std::vector<int>& component,
-                   double tolerance, std::size_t* pairs = nullptr);
+                   double tolerance, std::size_t* pairs = nullptr, const StopRequested& stop = {});
 
 // The mesh without the faces around its non-manifold edges (three faces or more): where a
 // stitch pinched a few rims together, a small hole (for fill_holes) instead of a fin.

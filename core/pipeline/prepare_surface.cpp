@@ -88,7 +88,7 @@ void join_torn_pieces(Mesh& mesh, std::vector<int>& component, PreparedSurface& 
   std::vector<int> piece = component;
   std::size_t pieces = out.components, pairs = 0, set_aside = 0;
   const Mesh moved =
-      stitch_pieces(mesh, mesh_edges(mesh.F), component, kTearGap * diagonal, &pairs);
+      stitch_pieces(mesh, mesh_edges(mesh.F), component, kTearGap * diagonal, &pairs, stop);
   if (pairs > 0) {
     joined = clean_again(moved, report, stop);
     // A stitch that pinched a few rims together (a rim vertex snapped where two sides met)

@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "common/errors.hpp"
 #include "eval/perturbations.hpp"
 #include "mesh/clean_mesh.hpp"
 #include "mesh/connected_components.hpp"
@@ -71,6 +72,14 @@ TEST(StitchPieces, ASphereCutInTwoBecomesTheClosedSphereAgain) {
   EXPECT_EQ(report.nonmanifold_edges, 0u);
   EXPECT_EQ(joined.mesh.V.rows(), sphere.V.rows());
   EXPECT_EQ(joined.mesh.F.rows(), sphere.F.rows());
+}
+
+TEST(StitchPieces, AskedToStopItStops) {
+  const Pieces torn = cleaned(cut_apart(test::icosphere(3), 0.1, 0.004));
+  const StopRequested stop = [] { return true; };
+  EXPECT_THROW(
+      stitch_pieces(torn.mesh, mesh_edges(torn.mesh.F), torn.component, 0.02, nullptr, stop),
+      Interrupted);
 }
 
 TEST(StitchPieces, GapsWiderThanTheToleranceStayOpen) {
