@@ -31,6 +31,9 @@ struct Slot {
   std::uint64_t digest = 0;
   std::string bytes;
   arg::ArgGraph graph;
+  bool repeated = false;    // the last graph_of() found `graph` already there
+  bool prep_valid = false;  // `prep` describes `graph`
+  arg::MatchPrep prep;
 };
 
 ToastKey toast_key(Datum raw) {
@@ -100,7 +103,10 @@ GraphArg graph_arg(FunctionCallInfo fcinfo, GraphCacheHolder* holder, int slot, 
 
 const arg::ArgGraph& graph_of(GraphCacheHolder* holder, int slot, const GraphArg& argument,
                               arg::ArgGraph& scratch) {
-  if (argument.cached) return *argument.cached;
+  if (argument.cached) {
+    holder->cache->slots[slot].repeated = true;  // only a holder's slot can be found cached
+    return *argument.cached;
+  }
   const std::string_view bytes = view(argument.value);
   if (!holder) {
     arg::deserialize_arg_into(bytes, scratch, /*check_digest=*/false);
@@ -113,12 +119,13 @@ const arg::ArgGraph& graph_of(GraphCacheHolder* holder, int slot, const GraphArg
   const bool same_header = s.valid && s.size == bytes.size() && s.digest == digest;
   if (same_header && s.confirmed && std::memcmp(s.bytes.data(), bytes.data(), bytes.size()) == 0) {
     s.toast = key;
+    s.repeated = true;
     return s.graph;
   }
   // Read anew. The second time running that a slot sees the same size and digest, the argument
   // probably repeats: keep its bytes so that later calls can compare them.
   const bool keep_bytes = same_header && !s.confirmed;
-  s.valid = s.confirmed = false;
+  s.valid = s.confirmed = s.repeated = s.prep_valid = false;
   // Into the slot's graph: a ranking reads row after row, and the storage stays.
   arg::deserialize_arg_into(bytes, s.graph, /*check_digest=*/false);
   s.toast = key;
@@ -130,6 +137,19 @@ const arg::ArgGraph& graph_of(GraphCacheHolder* holder, int slot, const GraphArg
     s.confirmed = true;
   }
   return s.graph;
+}
+
+const arg::MatchPrep* match_prep_of(GraphCacheHolder* holder, int slot,
+                                    const arg::Weights& weights) {
+  if (!holder || !holder->cache) return nullptr;
+  Slot& s = holder->cache->slots[slot];
+  if (!s.valid || !s.repeated) return nullptr;
+  if (!s.prep_valid || !(s.prep.weights == weights)) {
+    s.prep_valid = false;
+    arg::prepare_match(s.graph, weights, s.prep);
+    s.prep_valid = true;
+  }
+  return &s.prep;
 }
 
 }  // namespace argpg

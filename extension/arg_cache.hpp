@@ -16,6 +16,8 @@
 #include <string_view>
 
 #include "graph/arg_graph.hpp"
+#include "match/match_prep.hpp"
+#include "match/weights.hpp"
 
 #include "arg_bridge.hpp"
 
@@ -46,5 +48,12 @@ GraphArg graph_arg(FunctionCallInfo fcinfo, GraphCacheHolder* holder, int slot, 
 // values were fully checked on input) and remembered. Without a holder, reads into `scratch`.
 const arg::ArgGraph& graph_of(GraphCacheHolder* holder, int slot, const GraphArg& argument,
                               arg::ArgGraph& scratch);
+
+// Inside guarded(), after graph_of(): the matcher's per-graph parts of the slot's graph for
+// these weights, made once and kept while the slot keeps its value (a ranking's query), or
+// nullptr when the slot's value just changed (a ranking's rows: preparing each would cost more
+// than it saves) or there is no holder.
+const arg::MatchPrep* match_prep_of(GraphCacheHolder* holder, int slot,
+                                    const arg::Weights& weights);
 
 }  // namespace argpg

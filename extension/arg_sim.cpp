@@ -19,7 +19,8 @@ double similarity(FunctionCallInfo fcinfo, const arg::Weights& weights) {
     // Checked on every call, on the graphs themselves: a cached query graph is no shortcut
     // around it, and a ranking stops at the first row built otherwise than the query.
     arg::require_comparable(ga, gb);
-    sim = arg::arg_similarity(ga, gb, weights);
+    sim = arg::arg_similarity(ga, gb, weights, nullptr, argpg::match_prep_of(cache, 0, weights),
+                              argpg::match_prep_of(cache, 1, weights));
   });
   argpg::raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot compare ARGs");
   return sim;

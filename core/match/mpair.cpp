@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <utility>
 
+#include "match/match_prep.hpp"
 #include "match/node_similarity.hpp"
 
 namespace arg {
@@ -17,24 +19,22 @@ struct Side {
   std::vector<int> group;  // per node: match group, -1 when unmatched
   std::vector<int> label;  // per node: branch label at its level, 0 when none
   // Per node: its only neighbour in the interval below (index 0) and above (1), -1 when it
-  // has none or several. Found once here, since branches are walked along them many times.
-  std::vector<std::array<int, 2>> only;
+  // has none or several; branches are walked along them many times. From the graph's
+  // MatchPrep when it has one, else worked out into `own_only`.
+  const std::array<int, 2>* only = nullptr;
+  std::vector<std::array<int, 2>> own_only;
+  const MatchPrep* prep = nullptr;  // its parents of neighbours, when it has a MatchPrep
 
-  void reset(const ArgGraph& graph) {
+  void reset(const ArgGraph& graph, const MatchPrep* given) {
     g = &graph;
     group.assign(graph.nodes.size(), -1);
     label.assign(graph.nodes.size(), 0);
-    only.resize(graph.nodes.size());
-    for (std::size_t i = 0; i < graph.nodes.size(); ++i) {
-      const ArgNode& n = graph.nodes[i];
-      const std::uint32_t* adj = graph.adjacency.data() + n.adj_begin;
-      int found[2] = {-1, -1}, count[2] = {0, 0};
-      for (std::uint32_t k = 0; k < n.adj_count; ++k) {
-        const int side = adj[k] > i ? 1 : 0;  // nodes of a level are sorted by interval
-        found[side] = int(adj[k]), ++count[side];
-      }
-      for (int side = 0; side < 2; ++side)
-        only[i][std::size_t(side)] = count[side] == 1 ? found[side] : -1;
+    prep = given && given->nodes == graph.nodes.size() ? given : nullptr;
+    if (prep) {
+      only = prep->only.data();
+    } else {
+      prepare_only_neighbours(graph, own_only);
+      only = own_only.data();
     }
   }
   const ArgNode& node(int i) const { return g->nodes[std::size_t(i)]; }
@@ -65,37 +65,59 @@ struct Side {
 // neighbours below (side 0) and above (side 1). Parents are settled before a level starts,
 // so this is computed at most once per node and level. Up to four groups are kept per side.
 struct NeighbourParents {
+  std::uint64_t level_stamp = 0;  // valid for the level of this stamp only
   int group[2][4];
   int count[2];
 };
 
-// Computed on first use (count[0] < 0 until then): most nodes never get past the cheaper
-// tests of `candidate`, and this was a fifth of a comparison when done for every node.
-const NeighbourParents& neighbour_parents(const Side& side, int begin, int i,
-                                          std::vector<NeighbourParents>& out) {
-  NeighbourParents& np = out[std::size_t(i - begin)];
-  if (np.count[0] >= 0) return np;
+// Fills `np` for node i.
+[[gnu::noinline]] void find_neighbour_parents(const Side& side, int i, NeighbourParents& np) {
   np.count[0] = np.count[1] = 0;
-  const ArgNode& n = side.node(i);
-  const std::uint32_t* adj = side.g->adjacency.data() + n.adj_begin;
-  for (std::uint32_t k = 0; k < n.adj_count; ++k) {
-    const int j = int(adj[k]);
-    const int gp = side.parent_group(j);
-    if (gp < 0) continue;
-    const int up = j > i ? 1 : 0;  // nodes of a level are sorted by interval
+  auto add = [&np](int up, int gp) {
     int* list = np.group[up];
     int& c = np.count[up];
     bool seen = false;
     for (int q = 0; q < c; ++q) seen |= list[q] == gp;
     if (!seen && c < 4) list[c++] = gp;
+  };
+  if (const MatchPrep* prep = side.prep) {
+    // The same groups from the prepared parents (duplicates dropped there as they would be here).
+    const std::uint32_t split = prep->parent_split[std::size_t(i)];
+    for (std::uint32_t k = prep->parent_begin[std::size_t(i)];
+         k < prep->parent_begin[std::size_t(i) + 1]; ++k) {
+      const int gp = side.group[std::size_t(prep->parents[k])];
+      if (gp >= 0) add(k >= split ? 1 : 0, gp);
+    }
+    return;
   }
-  return np;
+  const ArgNode& n = side.node(i);
+  const std::uint32_t* adj = side.g->adjacency.data() + n.adj_begin;
+  for (std::uint32_t k = 0; k < n.adj_count; ++k) {
+    const int j = int(adj[k]);
+    const int gp = side.parent_group(j);
+    if (gp >= 0) add(j > i ? 1 : 0, gp);  // nodes of a level are sorted by interval
+  }
 }
 
-void reset_neighbour_parents(int begin, int end, std::vector<NeighbourParents>& out) {
-  out.resize(std::size_t(end - begin));
-  for (NeighbourParents& np : out) np.count[0] = -1;
-}
+// Per node of the current level, computed on first use: most nodes never get past the cheaper
+// tests of `candidate`, and this was a fifth of a comparison when done for every node. Entries
+// carry the stamp of the level they were found at, so a new level needs no clearing pass.
+struct LevelParents {
+  std::vector<NeighbourParents> entry;
+  std::uint64_t stamp = 0;  // grows by one a level, over all calls on the thread
+  int begin = 0;
+
+  void start_level(int level_begin, int level_end) {
+    ++stamp, begin = level_begin;
+    if (entry.size() < std::size_t(level_end - level_begin))
+      entry.resize(std::size_t(level_end - level_begin));
+  }
+  const NeighbourParents& of(const Side& side, int i) {
+    NeighbourParents& np = entry[std::size_t(i - begin)];
+    if (np.level_stamp != stamp) find_neighbour_parents(side, i, np), np.level_stamp = stamp;
+    return np;
+  }
+};
 
 // Where the parents of the neighbours of m and of n on one side are matched, at least one
 // of m's is matched to one of n's.
@@ -118,10 +140,9 @@ struct Founded {
 
 struct Scratch {
   Side x, y;
-  std::vector<std::pair<double, int>> order;
-  std::vector<double> self;
+  MatchPrep::Sums own_sums;           // X's self sims and order when it comes without a MatchPrep
   std::vector<int> y_interval_begin;  // per interval of the current level: first Y node
-  std::vector<NeighbourParents> x_parents, y_parents;  // per node of the current level
+  LevelParents x_parents, y_parents;
   std::vector<Founded> groups;
   std::vector<std::pair<int, int>> extra_x, extra_y;  // (group, node) beyond the founders
 };
@@ -167,21 +188,23 @@ void extend_groups(const Side& side, const Side& other, const std::vector<Founde
 
 }  // namespace
 
-double match_graphs(const ArgGraph& gx, const ArgGraph& gy, const Weights& w,
-                    std::vector<MatchGroup>* groups_out, std::vector<double>* group_sim,
-                    double* self_x) {
+double match_graphs(const ArgGraph& gx, const MatchPrep* px, const ArgGraph& gy,
+                    const MatchPrep* py, const Weights& w, std::vector<MatchGroup>* groups_out,
+                    std::vector<double>* group_sim, double* self_x) {
   Scratch& s = thread_scratch();
   Side& X = s.x;
   Side& Y = s.y;
-  X.reset(gx), Y.reset(gy);
+  X.reset(gx, px), Y.reset(gy, py);
   s.groups.clear();
   if (group_sim) group_sim->clear();
   const int levels = std::min(gx.levels(), gy.levels());
-  s.self.resize(gx.nodes.size());
-  double self_sum = 0;
-  for (std::size_t m = 0; m < gx.nodes.size(); ++m)
-    self_sum += s.self[m] = node_self_sim(gx.nodes[m], w);
-  if (self_x) *self_x = self_sum;
+  const MatchPrep::Sums* sums =
+      px && px->nodes == gx.nodes.size() ? px->sums(w.lambda_4 > 0) : nullptr;
+  if (!sums) {
+    prepare_sums(gx, w, s.own_sums);
+    sums = &s.own_sums;
+  }
+  if (self_x) *self_x = sums->total;
   int next_label = 1;
   double numerator = 0;
   std::vector<std::pair<int, int>> all_extra_x, all_extra_y;  // only filled for groups_out
@@ -191,11 +214,6 @@ double match_graphs(const ArgGraph& gx, const ArgGraph& gy, const Weights& w,
     const int yb = int(gy.level_begin[std::size_t(r)]),
               ye = int(gy.level_begin[std::size_t(r) + 1]);
     const int first_group = int(s.groups.size());
-    // X's nodes by decreasing own sim, ties by index: sorted as (-sim, index) pairs, which
-    // keeps the keys beside each other in memory.
-    s.order.resize(std::size_t(xe - xb));
-    for (int m = xb; m < xe; ++m) s.order[std::size_t(m - xb)] = {-s.self[std::size_t(m)], m};
-    std::sort(s.order.begin(), s.order.end());
     // Where each interval's nodes start in Y's level (nodes are sorted by interval).
     const int intervals = 1 << r;
     s.y_interval_begin.assign(std::size_t(intervals) + 1, ye);
@@ -204,11 +222,12 @@ double match_graphs(const ArgGraph& gx, const ArgGraph& gy, const Weights& w,
       s.y_interval_begin[std::size_t(k)] =
           std::min(s.y_interval_begin[std::size_t(k)], s.y_interval_begin[std::size_t(k) + 1]);
     if (w.tung_rule) {
-      reset_neighbour_parents(xb, xe, s.x_parents);
-      reset_neighbour_parents(yb, ye, s.y_parents);
+      s.x_parents.start_level(xb, xe);
+      s.y_parents.start_level(yb, ye);
     }
-    for (const auto& entry : s.order) {
-      const int m = entry.second;
+    // X's nodes by decreasing own sim, ties by index.
+    for (int k = xb; k < xe; ++k) {
+      const int m = sums->order[std::size_t(k)];
       const int pg = X.parent_group(m);
       if (pg == -1) continue;  // parent unmatched: the subtree stays unmatched
       const ArgNode& nm = gx.nodes[std::size_t(m)];
@@ -218,9 +237,7 @@ double match_graphs(const ArgGraph& gx, const ArgGraph& gy, const Weights& w,
       const int y_end = s.y_interval_begin[std::size_t(nm.interval) + 1];
       for (int n = s.y_interval_begin[nm.interval]; n < y_end; ++n) {
         if (!candidate(X, Y, m, n, pg)) continue;
-        if (w.tung_rule && !neighbours_agree(neighbour_parents(X, xb, m, s.x_parents),
-                                             neighbour_parents(Y, yb, n, s.y_parents)))
-          continue;
+        if (w.tung_rule && !neighbours_agree(s.x_parents.of(X, m), s.y_parents.of(Y, n))) continue;
         const double loss = node_loss(nm, gy.nodes[std::size_t(n)], gx.levels(), w);
         if (best >= 0 && loss > best_loss) continue;
         // Equal losses are settled by the larger sim, computed only then.
@@ -288,6 +305,16 @@ double match_graphs(const ArgGraph& gx, const ArgGraph& gy, const Weights& w,
     for (auto [gid, u] : all_extra_y) (*groups_out)[std::size_t(gid)].y.push_back(u);
   }
   return numerator;
+}
+
+}  // namespace arg
+
+namespace arg {
+
+double match_graphs(const ArgGraph& x, const ArgGraph& y, const Weights& weights,
+                    std::vector<MatchGroup>* groups, std::vector<double>* group_sim,
+                    double* self_x) {
+  return match_graphs(x, nullptr, y, nullptr, weights, groups, group_sim, self_x);
 }
 
 }  // namespace arg

@@ -39,6 +39,15 @@ double match_graphs(const ArgGraph& x, const ArgGraph& y, const Weights& weights
                     std::vector<MatchGroup>* groups = nullptr,
                     std::vector<double>* group_sim = nullptr, double* self_x = nullptr);
 
+struct MatchPrep;
+
+// The same, with the per-graph parts from each graph's MatchPrep (match/match_prep.hpp) where
+// given (nullptr: worked out here). `weights` are the effective ones (lambda_4 = 0 unless both
+// graphs have colour); each prep must have been made for its graph as it is now.
+double match_graphs(const ArgGraph& x, const MatchPrep* px, const ArgGraph& y, const MatchPrep* py,
+                    const Weights& weights, std::vector<MatchGroup>* groups = nullptr,
+                    std::vector<double>* group_sim = nullptr, double* self_x = nullptr);
+
 // sim(m, m) without the histogram loops: every histogram of a node sums to its area (colour:
 // each of its three channels, counted a third each).
 inline double node_self_sim(const ArgNode& n, const Weights& w) {

@@ -6,6 +6,7 @@
 
 #include "features/laplace_spectrum.hpp"
 #include "features/panorama_descriptor.hpp"
+#include "match/match_prep.hpp"
 #include "match/mpair.hpp"
 #include "match/node_similarity.hpp"
 
@@ -54,13 +55,14 @@ int index_in_level(const ArgGraph& g, int node) {
   return node - int(g.level_begin[g.nodes[std::size_t(node)].level]);
 }
 
-double similarity_ordered(const ArgGraph& x, const ArgGraph& y, const Weights& w,
-                          std::vector<MatchPair>* matches, bool swapped) {
+double similarity_ordered(const ArgGraph& x, const MatchPrep* px, const ArgGraph& y,
+                          const MatchPrep* py, const Weights& w, std::vector<MatchPair>* matches,
+                          bool swapped) {
   std::vector<MatchGroup> groups;
   std::vector<double> group_sim;
   double self_x = 0;
-  const double numerator =
-      match_graphs(x, y, w, matches ? &groups : nullptr, matches ? &group_sim : nullptr, &self_x);
+  const double numerator = match_graphs(x, px, y, py, w, matches ? &groups : nullptr,
+                                        matches ? &group_sim : nullptr, &self_x);
   if (matches) {
     matches->clear();
     for (std::size_t k = 0; k < groups.size(); ++k)
@@ -80,7 +82,8 @@ double similarity_ordered(const ArgGraph& x, const ArgGraph& y, const Weights& w
       return p.level != q.level ? p.level < q.level : p.a_node < q.a_node;
     });
   }
-  const double denominator = 0.5 * (self_x + self_mass(y, w));
+  const MatchPrep::Sums* sums_y = py ? py->sums(w.lambda_4 > 0) : nullptr;
+  const double denominator = 0.5 * (self_x + (sums_y ? sums_y->total : self_mass(y, w)));
   if (!(denominator > 0)) return 0.0;
   return std::clamp(1.0 - numerator / denominator, 0.0, 1.0);
 }
@@ -88,19 +91,23 @@ double similarity_ordered(const ArgGraph& x, const ArgGraph& y, const Weights& w
 }  // namespace
 
 double graph_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& weights,
-                        std::vector<MatchPair>* matches) {
+                        std::vector<MatchPair>* matches, const MatchPrep* prep_a,
+                        const MatchPrep* prep_b) {
   // Colour is compared only when both models have some; otherwise it weighs nothing.
   Weights w = weights;
   if (!(a.summary.has_colour && b.summary.has_colour)) w.lambda_4 = 0;
+  if (!prep_fits(prep_a, a, weights)) prep_a = nullptr;
+  if (!prep_fits(prep_b, b, weights)) prep_b = nullptr;
   const int order = compare_graphs(a, b);
   if (order == 0 && !matches) return 0.0;  // identical graphs: self-identity holds exactly
-  const double s = order > 0 ? similarity_ordered(b, a, w, matches, true)
-                             : similarity_ordered(a, b, w, matches, false);
+  const double s = order > 0 ? similarity_ordered(b, prep_b, a, prep_a, w, matches, true)
+                             : similarity_ordered(a, prep_a, b, prep_b, w, matches, false);
   return order == 0 ? 0.0 : s;
 }
 
 SimilarityParts similarity_parts(const ArgGraph& a, const ArgGraph& b, const Weights& w,
-                                 std::vector<MatchPair>* matches) {
+                                 std::vector<MatchPair>* matches, const MatchPrep* prep_a,
+                                 const MatchPrep* prep_b) {
   SimilarityParts p;
   // A proxy's graph is a shell's (weights.hpp): it counts its share graph_on_proxy.
   const bool on_proxy = ((a.summary.flags | b.summary.flags) & kFlagProxy) != 0;
@@ -119,7 +126,7 @@ SimilarityParts similarity_parts(const ArgGraph& a, const ArgGraph& b, const Wei
   }
   // Values without the whole-shape sections (format 1) fall back on the graph alone.
   if (p.w_graph + p.w_panorama + p.w_spectrum <= 0) p.w_graph = 1;
-  if (p.w_graph > 0 || matches) p.graph = graph_similarity(a, b, w, matches);
+  if (p.w_graph > 0 || matches) p.graph = graph_similarity(a, b, w, matches, prep_a, prep_b);
   const double total = p.w_graph + p.w_panorama + p.w_spectrum;
   p.sim = std::clamp(
       (p.w_graph * p.graph + p.w_panorama * p.panorama + p.w_spectrum * p.spectrum) / total, 0.0,
@@ -128,9 +135,10 @@ SimilarityParts similarity_parts(const ArgGraph& a, const ArgGraph& b, const Wei
 }
 
 double arg_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& weights,
-                      std::vector<MatchPair>* matches) {
+                      std::vector<MatchPair>* matches, const MatchPrep* prep_a,
+                      const MatchPrep* prep_b) {
   if (!matches && compare_graphs(a, b) == 0) return 0.0;  // identical: self-identity exactly
-  return similarity_parts(a, b, weights, matches).sim;
+  return similarity_parts(a, b, weights, matches, prep_a, prep_b).sim;
 }
 
 }  // namespace arg

@@ -10,6 +10,8 @@
 
 namespace arg {
 
+struct MatchPrep;
+
 // One matched pair; a node matched to a group appears in several rows with the same group.
 struct MatchPair {
   int level = 0;
@@ -24,13 +26,18 @@ struct MatchPair {
 // graph's SIM and the whole-shape distances (Weights::graph, panorama, spectrum; the graph's
 // weight times graph_on_proxy when either was built on a proxy); a term one of the values
 // lacks is left out. Fills `matches` (the graph's node pairs) if given.
+// `prep_a` and `prep_b` (optional, match/match_prep.hpp): the graphs' per-graph parts of
+// matching, made with these weights, to compare one graph many times for less; the result is
+// the same to the bit with or without them (a prep made with other weights is not used).
 double arg_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& weights = {},
-                      std::vector<MatchPair>* matches = nullptr);
+                      std::vector<MatchPair>* matches = nullptr, const MatchPrep* prep_a = nullptr,
+                      const MatchPrep* prep_b = nullptr);
 
 // The graph's own SIM (Hilaga et al., Tung and Schmitt): 1 - matched sim over self sim, in
 // [0, 1], 0 for identical graphs, exactly symmetric. Fills `matches` if given.
 double graph_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& weights = {},
-                        std::vector<MatchPair>* matches = nullptr);
+                        std::vector<MatchPair>* matches = nullptr,
+                        const MatchPrep* prep_a = nullptr, const MatchPrep* prep_b = nullptr);
 
 // The terms of arg_similarity: each distance in [0, 1] and the weight it got (0 when left out);
 // sim = sum of weight x distance over the sum of weights.
@@ -40,7 +47,9 @@ struct SimilarityParts {
   double sim = 0;
 };
 SimilarityParts similarity_parts(const ArgGraph& a, const ArgGraph& b, const Weights& weights,
-                                 std::vector<MatchPair>* matches = nullptr);
+                                 std::vector<MatchPair>* matches = nullptr,
+                                 const MatchPrep* prep_a = nullptr,
+                                 const MatchPrep* prep_b = nullptr);
 
 struct PartMatch {
   int level = 0;

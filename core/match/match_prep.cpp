@@ -1,0 +1,94 @@
+// Only-neighbours, self sims and the order of each level's nodes, worked out once per graph.
+#include "match/match_prep.hpp"
+
+#include <algorithm>
+#include <utility>
+
+#include "match/mpair.hpp"
+
+namespace arg {
+
+const MatchPrep::Sums* MatchPrep::sums(bool colour_counts) const {
+  if (!colour_counts) return &plain;
+  return coloured.self.size() == nodes ? &coloured : nullptr;
+}
+
+void prepare_only_neighbours(const ArgGraph& g, std::vector<std::array<int, 2>>& only) {
+  only.resize(g.nodes.size());
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    const ArgNode& n = g.nodes[i];
+    const std::uint32_t* adj = g.adjacency.data() + n.adj_begin;
+    int found[2] = {-1, -1}, count[2] = {0, 0};
+    for (std::uint32_t k = 0; k < n.adj_count; ++k) {
+      const int side = adj[k] > i ? 1 : 0;  // nodes of a level are sorted by interval
+      found[side] = int(adj[k]), ++count[side];
+    }
+    for (int side = 0; side < 2; ++side)
+      only[i][std::size_t(side)] = count[side] == 1 ? found[side] : -1;
+  }
+}
+
+void prepare_neighbour_parents(const ArgGraph& g, MatchPrep& out) {
+  const std::size_t n = g.nodes.size();
+  out.parent_begin.resize(n + 1);
+  out.parent_split.resize(n);
+  out.parents.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    const ArgNode& node = g.nodes[i];
+    const std::uint32_t* adj = g.adjacency.data() + node.adj_begin;
+    out.parent_begin[i] = std::uint32_t(out.parents.size());
+    for (int side = 0; side < 2; ++side) {
+      if (side == 1) out.parent_split[i] = std::uint32_t(out.parents.size());
+      const std::size_t first = out.parents.size();
+      for (std::uint32_t k = 0; k < node.adj_count; ++k) {
+        if ((adj[k] > i ? 1 : 0) != side) continue;  // nodes of a level are sorted by interval
+        const int p = g.nodes[adj[k]].parent;
+        if (p < 0) continue;
+        if (std::find(out.parents.begin() + std::ptrdiff_t(first), out.parents.end(), p) ==
+            out.parents.end())
+          out.parents.push_back(p);
+      }
+    }
+  }
+  out.parent_begin[n] = std::uint32_t(out.parents.size());
+}
+
+void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out) {
+  const std::size_t n = g.nodes.size();
+  out.self.resize(n);
+  out.total = 0;
+  for (std::size_t m = 0; m < n; ++m) out.total += out.self[m] = node_self_sim(g.nodes[m], w);
+  // Sorted as (-sim, index) pairs, which keeps the keys beside each other in memory.
+  std::vector<std::pair<double, int>> keyed(n);
+  for (std::size_t m = 0; m < n; ++m) keyed[m] = {-out.self[m], int(m)};
+  out.order.resize(n);
+  for (int r = 0; r <= g.levels(); ++r) {
+    const std::size_t b = g.level_begin[std::size_t(r)], e = g.level_begin[std::size_t(r) + 1];
+    std::sort(keyed.begin() + std::ptrdiff_t(b), keyed.begin() + std::ptrdiff_t(e));
+    for (std::size_t k = b; k < e; ++k) out.order[k] = keyed[k].second;
+  }
+}
+
+void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out) {
+  out.weights = weights;
+  out.nodes = g.nodes.size();
+  prepare_only_neighbours(g, out.only);
+  prepare_neighbour_parents(g, out);
+  Weights plain = weights;
+  plain.lambda_4 = 0;
+  prepare_sums(g, plain, out.plain);
+  if (g.summary.has_colour && weights.lambda_4 > 0) {
+    prepare_sums(g, weights, out.coloured);
+  } else {
+    out.coloured.self.clear();
+    out.coloured.order.clear();
+    out.coloured.total = 0;
+  }
+}
+
+bool prep_fits(const MatchPrep* prep, const ArgGraph& g, const Weights& weights) {
+  return prep && prep->nodes == g.nodes.size() && prep->only.size() == g.nodes.size() &&
+         prep->parent_split.size() == g.nodes.size() && prep->weights == weights;
+}
+
+}  // namespace arg

@@ -1,0 +1,54 @@
+// The part of matching that depends on one graph only, done once for a graph compared many times.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "graph/arg_graph.hpp"
+#include "match/weights.hpp"
+
+namespace arg {
+
+// What match_graphs would otherwise work out from one graph at every comparison (a quarter of
+// a comparison's instructions on SHREC 2007): a ranking prepares its query once, an evaluation
+// each model once. Holds no pointer into the graph, so it may be kept beside it, but it
+// describes the graph as it was when prepared: prepare again after the graph changes.
+struct MatchPrep {
+  // Self sims (sim(m, m)) with one colour weight; lambda_4 counts only when both graphs have
+  // colour, so a coloured graph needs both.
+  struct Sums {
+    std::vector<double> self;  // per node
+    double total = 0;          // over every node: the graph's share of SIM's denominator
+    std::vector<int> order;    // per level, its nodes by decreasing self sim, ties by index
+  };
+  Weights weights;        // as given to prepare_match (before the colour rule)
+  std::size_t nodes = 0;  // the graph's node count, checked on use
+  // Per node: its only neighbour in the interval below ([0]) and above ([1]), -1 when it has
+  // none or several.
+  std::vector<std::array<int, 2>> only;
+  // Per node, for Tung and Schmitt's rule: the distinct parents of its neighbours below, then
+  // of those above, each in adjacency order (roots' neighbours have none):
+  // parents[parent_begin[i], parent_split[i]) below, [parent_split[i], parent_begin[i + 1]) above.
+  std::vector<std::uint32_t> parent_begin, parent_split;
+  std::vector<int> parents;
+  Sums plain;     // lambda_4 = 0: when either graph has no colour
+  Sums coloured;  // the weights' lambda_4: filled when the graph has colour and lambda_4 > 0
+
+  // The sums for the effective lambda_4 (0 or weights.lambda_4), or nullptr when not held.
+  const Sums* sums(bool colour_counts) const;
+};
+
+// Fills `out` for `g` and `weights` (the weights as passed to arg_similarity).
+void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out);
+
+// Whether `prep` was made for a graph of g's shape with these weights (a cheap guard: the
+// caller keeps prep and graph together).
+bool prep_fits(const MatchPrep* prep, const ArgGraph& g, const Weights& weights);
+
+// Its parts one by one (match_graphs' own path when it gets no prep); `w` is the effective
+// weights.
+void prepare_only_neighbours(const ArgGraph& g, std::vector<std::array<int, 2>>& only);
+void prepare_neighbour_parents(const ArgGraph& g, MatchPrep& out);
+void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out);
+
+}  // namespace arg

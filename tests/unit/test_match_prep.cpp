@@ -1,0 +1,102 @@
+// MatchPrep: comparing with a graph's prepared parts gives the same bits as without them.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "match/match_prep.hpp"
+#include "match/similarity.hpp"
+#include "match/weights.hpp"
+#include "pipeline/build_arg.hpp"
+#include "test_shapes.hpp"
+
+using namespace arg;
+
+namespace {
+
+// Built graphs of a few shapes, and one of them again with colour histograms (its curvature's
+// mass spread over the channels), so that the colour rule is exercised on both sides.
+const std::vector<ArgGraph>& graphs() {
+  static const std::vector<ArgGraph> all = [] {
+    std::vector<ArgGraph> g;
+    g.push_back(build_arg(test::torus()));
+    g.push_back(build_arg(test::capsule()));
+    g.push_back(build_arg(test::capsule(2, 0.7)));
+    g.push_back(build_arg(test::sphere(40, 60, 2, 1, 0.7)));
+    for (int k = 0; k < 2; ++k) {
+      ArgGraph coloured = g[std::size_t(k + 1)];
+      coloured.summary.has_colour = 1;
+      for (ArgNode& n : coloured.nodes)
+        for (std::size_t c = 0; c < n.colour.size(); ++c)
+          n.colour[c] = n.curv_mean[c % n.curv_mean.size()] * float(1 + c % 3) / 2.0f;
+      g.push_back(coloured);
+    }
+    return g;
+  }();
+  return all;
+}
+
+bool same_pairs(const std::vector<MatchPair>& x, const std::vector<MatchPair>& y) {
+  if (x.size() != y.size()) return false;
+  for (std::size_t k = 0; k < x.size(); ++k)
+    if (x[k].level != y[k].level || x[k].a_node != y[k].a_node || x[k].b_node != y[k].b_node ||
+        x[k].group != y[k].group || x[k].loss != y[k].loss || x[k].sim != y[k].sim)
+      return false;
+  return true;
+}
+
+}  // namespace
+
+TEST(MatchPrep, GivesTheSameBitsAsComparingWithout) {
+  for (const char* preset : {"arg", "mrg", "colour", "shape"}) {
+    const Weights w = weights_preset(preset);
+    std::vector<MatchPrep> preps(graphs().size());
+    for (std::size_t i = 0; i < graphs().size(); ++i) prepare_match(graphs()[i], w, preps[i]);
+    for (std::size_t i = 0; i < graphs().size(); ++i)
+      for (std::size_t j = 0; j < graphs().size(); ++j) {
+        const ArgGraph &a = graphs()[i], &b = graphs()[j];
+        std::vector<MatchPair> plain, prepared;
+        const double s0 = arg_similarity(a, b, w, &plain);
+        const double s1 = arg_similarity(a, b, w, &prepared, &preps[i], &preps[j]);
+        EXPECT_EQ(s0, s1) << preset << " " << i << " " << j;
+        EXPECT_TRUE(same_pairs(plain, prepared)) << preset << " " << i << " " << j;
+        // One side prepared only, and without the pairs (the ranking's path).
+        EXPECT_EQ(arg_similarity(a, b, w, nullptr, &preps[i], nullptr), s0);
+        EXPECT_EQ(arg_similarity(a, b, w, nullptr, nullptr, &preps[j]), s0);
+      }
+  }
+}
+
+TEST(MatchPrep, ColouredGraphsHoldBothSumsAndPlainOnesOnlyOne) {
+  const Weights w = weights_preset("arg");
+  MatchPrep plain, coloured;
+  prepare_match(graphs()[1], w, plain);
+  prepare_match(graphs()[4], w, coloured);
+  EXPECT_NE(plain.sums(false), nullptr);
+  EXPECT_EQ(plain.sums(true), nullptr);
+  ASSERT_NE(coloured.sums(true), nullptr);
+  // Colour adds lambda_4 x area to every node's own sim.
+  EXPECT_GT(coloured.sums(true)->total, coloured.sums(false)->total);
+  for (const MatchPrep* p : {&plain, &coloured})
+    for (int r = 0; r <= graphs()[1].levels(); ++r) {
+      const auto& order = p->sums(false)->order;
+      const auto& self = p->sums(false)->self;
+      for (std::uint32_t k = graphs()[1].level_begin[std::size_t(r)] + 1;
+           k < graphs()[1].level_begin[std::size_t(r) + 1]; ++k)
+        EXPECT_GE(self[std::size_t(order[k - 1])], self[std::size_t(order[k])]);
+    }
+}
+
+TEST(MatchPrep, APrepForOtherWeightsOrAnotherGraphIsNotUsed) {
+  const Weights arg_w = weights_preset("arg"), mrg_w = weights_preset("mrg");
+  MatchPrep wrong_weights, wrong_graph;
+  prepare_match(graphs()[0], mrg_w, wrong_weights);
+  prepare_match(graphs()[3], arg_w, wrong_graph);
+  EXPECT_FALSE(prep_fits(&wrong_weights, graphs()[0], arg_w));
+  EXPECT_TRUE(prep_fits(&wrong_weights, graphs()[0], mrg_w));
+  ASSERT_NE(graphs()[0].nodes.size(), graphs()[3].nodes.size());
+  EXPECT_FALSE(prep_fits(&wrong_graph, graphs()[0], arg_w));
+  EXPECT_FALSE(prep_fits(nullptr, graphs()[0], arg_w));
+  const double s0 = arg_similarity(graphs()[0], graphs()[1], arg_w);
+  EXPECT_EQ(arg_similarity(graphs()[0], graphs()[1], arg_w, nullptr, &wrong_weights, nullptr), s0);
+  EXPECT_EQ(arg_similarity(graphs()[0], graphs()[1], arg_w, nullptr, &wrong_graph, nullptr), s0);
+}
