@@ -1,7 +1,10 @@
-// Google Benchmark of comparing two ARGs (10k-triangle models) of the same and other classes.
+// Google Benchmark of comparing two ARGs (10k-triangle models) of the same and other classes,
+// with and without the per-graph preparation, and of reading a stored value as a ranking does.
 #include <benchmark/benchmark.h>
 
 #include "bench_models.hpp"
+#include "graph/serialize.hpp"
+#include "match/match_prep.hpp"
 #include "match/similarity.hpp"
 #include "pipeline/build_arg.hpp"
 
@@ -36,6 +39,39 @@ void BM_SimOctopus(benchmark::State& state) {
   compare(state, graph("octopus", 0), graph("octopus", 3), Weights{});
 }
 
+// A ranking's comparison: the query prepared once, the row not (argtool eval prepares both).
+void BM_SimQueryPrepared(benchmark::State& state) {
+  const ArgGraph &query = graph("human", 0), &row = graph("human", 2);
+  MatchPrep prep;
+  prepare_match(query, Weights{}, prep);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(arg_similarity(row, query, Weights{}, nullptr, nullptr, &prep));
+}
+void BM_SimBothPrepared(benchmark::State& state) {
+  const ArgGraph &a = graph("human", 0), &b = graph("human", 2);
+  MatchPrep pa, pb;
+  prepare_match(a, Weights{}, pa);
+  prepare_match(b, Weights{}, pb);
+  for (auto _ : state) benchmark::DoNotOptimize(arg_similarity(a, b, Weights{}, nullptr, &pa, &pb));
+}
+void BM_PrepareMatch(benchmark::State& state) {
+  MatchPrep prep;
+  for (auto _ : state) prepare_match(graph("human", 2), Weights{}, prep);
+}
+
+// Reading a row's stored bytes into a graph that held another value, as the ranking's cache
+// slot does (stored values were checked on input: no digest pass).
+void BM_ReadStoredValue(benchmark::State& state) {
+  const std::string a = serialize_arg(graph("human", 0)), b = serialize_arg(graph("cup", 1));
+  ArgGraph slot;
+  bool flip = false;
+  for (auto _ : state) {
+    deserialize_arg_into((flip = !flip) ? a : b, slot, /*check_digest=*/false);
+    benchmark::DoNotOptimize(slot.nodes.data());
+  }
+  state.counters["bytes"] = double(a.size() + b.size()) / 2;
+}
+
 }  // namespace
 
 BENCHMARK(BM_SimSameClass)
@@ -51,3 +87,19 @@ BENCHMARK(BM_SimSameClassMrg)
     ->Repetitions(5)
     ->ReportAggregatesOnly(true);
 BENCHMARK(BM_SimOctopus)->Unit(benchmark::kMicrosecond)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(BM_SimQueryPrepared)
+    ->Unit(benchmark::kMicrosecond)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_SimBothPrepared)
+    ->Unit(benchmark::kMicrosecond)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_PrepareMatch)
+    ->Unit(benchmark::kMicrosecond)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_ReadStoredValue)
+    ->Unit(benchmark::kMicrosecond)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly(true);

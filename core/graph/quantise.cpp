@@ -21,16 +21,8 @@ std::uint16_t quantise_unit16(float x) {
   return std::uint16_t(rounded(double(x) * 65535.0, 65535));
 }
 
-float unit16_value(std::uint16_t q) {
-  return float(q / 65535.0);
-}
-
 std::uint8_t quantise_byte(float x, float lo, float hi) {
   return std::uint8_t(rounded((double(x) - lo) / (double(hi) - lo) * 255.0, 255));
-}
-
-float byte_value(std::uint8_t q, float lo, float hi) {
-  return float(lo + (double(hi) - lo) * (q / 255.0));
 }
 
 void quantise_bins(const float* bins, std::size_t count, float total, std::uint8_t* out) {
@@ -61,12 +53,6 @@ void quantise_bins(const float* bins, std::size_t count, float total, std::uint8
   }
 }
 
-void bins_values(const std::uint8_t* q, std::size_t count, float total, float* out) {
-  // One multiplication a bin: this runs on every node of every row a query ranks.
-  const float step = total / 255.0f;
-  for (std::size_t k = 0; k < count; ++k) out[k] = float(q[k]) * step;
-}
-
 float quantise_sqrt_block(const float* x, std::size_t count, std::uint8_t* out) {
   float scale = 0;
   for (std::size_t k = 0; k < count; ++k) scale = std::max(scale, x[k]);
@@ -76,24 +62,13 @@ float quantise_sqrt_block(const float* x, std::size_t count, std::uint8_t* out) 
   return scale;
 }
 
-void sqrt_block_values(const std::uint8_t* q, std::size_t count, float scale, float* out) {
+const std::array<float, 256>& code_squares() {
   static const std::array<float, 256> squares = [] {
     std::array<float, 256> t{};
     for (int k = 0; k < 256; ++k) t[std::size_t(k)] = float((k / 255.0) * (k / 255.0));
     return t;
   }();
-  for (std::size_t k = 0; k < count; ++k) out[k] = scale * squares[q[k]];
-}
-
-bool canonical_bins(const std::uint8_t* q, std::size_t count, std::uint16_t total_code) {
-  unsigned sum = 0;
-  for (std::size_t k = 0; k < count; ++k) sum += q[k];
-  return total_code == 0 ? sum == 0 : sum <= 255;
-}
-
-bool canonical_sqrt_block(const std::uint8_t* q, std::size_t count, float scale) {
-  const std::uint8_t top = count ? *std::max_element(q, q + count) : 0;
-  return scale == 0 ? top == 0 : scale >= kMinBlockScale && top == 255;
+  return squares;
 }
 
 }  // namespace arg

@@ -1,6 +1,7 @@
 // The codecs of format 3: how each float of an ARG is stored in one or two bytes, and back.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -8,21 +9,30 @@ namespace arg {
 
 // Every codec is exact on its own output: quantising a decoded value gives back the same code,
 // so a value read and written again keeps its bytes (test_quantise.cpp checks every code).
+// The decoders are defined here, inline: they run on every node of every row a query ranks,
+// and as calls into another file they were a tenth of a ranking.
 
 // [0, 1] in 65,535 steps (areas, lengths, volumes): 1.5e-5, far below what SIM resolves.
 std::uint16_t quantise_unit16(float x);
-float unit16_value(std::uint16_t q);
+inline float unit16_value(std::uint16_t q) {
+  return float(q / 65535.0);
+}
 
 // [lo, hi] in 255 steps, clamped (angles, the barycentre's radius, a node's mu range).
 std::uint8_t quantise_byte(float x, float lo, float hi);
-float byte_value(std::uint8_t q, float lo, float hi);
+inline float byte_value(std::uint8_t q, float lo, float hi) {
+  return float(lo + (double(hi) - lo) * (q / 255.0));
+}
 
 // A histogram whose bins sum to `total` (a node's area): each bin as a fraction of the total
 // in 255 steps, so small nodes keep their shape, the codes summing to 255 (largest
 // remainders) so the bins read back sum to the total again. At most 64 bins; a total of 0
 // stores zeros.
 void quantise_bins(const float* bins, std::size_t count, float total, std::uint8_t* out);
-void bins_values(const std::uint8_t* q, std::size_t count, float total, float* out);
+inline void bins_values(const std::uint8_t* q, std::size_t count, float total, float* out) {
+  const float step = total / 255.0f;  // one multiplication a bin
+  for (std::size_t k = 0; k < count; ++k) out[k] = float(q[k]) * step;
+}
 
 // A block of non-negative values with a heavy tail (the panorama's spectra): the square root
 // of each value over the block's largest, in 255 steps; small values keep their precision
@@ -30,12 +40,25 @@ void bins_values(const std::uint8_t* q, std::size_t count, float total, float* o
 // needs back; a block whose largest value is below kMinBlockScale is stored as zeros, scale 0.
 inline constexpr float kMinBlockScale = 1e-6f;
 float quantise_sqrt_block(const float* x, std::size_t count, std::uint8_t* out);
-void sqrt_block_values(const std::uint8_t* q, std::size_t count, float scale, float* out);
+// (k / 255)^2 for every code k.
+const std::array<float, 256>& code_squares();
+inline void sqrt_block_values(const std::uint8_t* q, std::size_t count, float scale, float* out) {
+  const std::array<float, 256>& squares = code_squares();
+  for (std::size_t k = 0; k < count; ++k) out[k] = scale * squares[q[k]];
+}
 
 // Whether codes are those the writer makes, so that a value read is written back byte for
 // byte: a histogram's codes sum to at most 255, and to 0 when its total's code is 0; a block's
 // largest code is 255 under a scale in [kMinBlockScale, ...), and every code is 0 under scale 0.
-bool canonical_bins(const std::uint8_t* q, std::size_t count, std::uint16_t total_code);
-bool canonical_sqrt_block(const std::uint8_t* q, std::size_t count, float scale);
+inline bool canonical_bins(const std::uint8_t* q, std::size_t count, std::uint16_t total_code) {
+  unsigned sum = 0;
+  for (std::size_t k = 0; k < count; ++k) sum += q[k];
+  return total_code == 0 ? sum == 0 : sum <= 255;
+}
+inline bool canonical_sqrt_block(const std::uint8_t* q, std::size_t count, float scale) {
+  std::uint8_t top = 0;
+  for (std::size_t k = 0; k < count; ++k) top = q[k] > top ? q[k] : top;
+  return scale == 0 ? top == 0 : scale >= kMinBlockScale && top == 255;
+}
 
 }  // namespace arg

@@ -53,6 +53,22 @@ void prepare_neighbour_parents(const ArgGraph& g, MatchPrep& out) {
   out.parent_begin[n] = std::uint32_t(out.parents.size());
 }
 
+void prepare_keys(const ArgGraph& g, std::vector<MatchKey>& keys) {
+  keys.resize(g.nodes.size());
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    const ArgNode& n = g.nodes[i];
+    keys[i] = {n.parent, n.interval, n.a, n.l, n.r, n.theta, n.phi};
+  }
+}
+
+void prepare_interval_begin(const ArgGraph& g, int r, int* out) {
+  const int b = int(g.level_begin[std::size_t(r)]), e = int(g.level_begin[std::size_t(r) + 1]);
+  const int intervals = 1 << r;
+  std::fill(out, out + intervals + 1, e);
+  for (int n = e - 1; n >= b; --n) out[g.nodes[std::size_t(n)].interval] = n;
+  for (int k = intervals - 1; k >= 0; --k) out[k] = std::min(out[k], out[k + 1]);
+}
+
 void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out) {
   const std::size_t n = g.nodes.size();
   out.self.resize(n);
@@ -74,6 +90,10 @@ void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out) {
   out.nodes = g.nodes.size();
   prepare_only_neighbours(g, out.only);
   prepare_neighbour_parents(g, out);
+  prepare_keys(g, out.keys);
+  out.interval_begin.resize(interval_offset(g.levels() + 1));
+  for (int r = 0; r <= g.levels(); ++r)
+    prepare_interval_begin(g, r, out.interval_begin.data() + interval_offset(r));
   Weights plain = weights;
   plain.lambda_4 = 0;
   prepare_sums(g, plain, out.plain);
@@ -88,7 +108,8 @@ void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out) {
 
 bool prep_fits(const MatchPrep* prep, const ArgGraph& g, const Weights& weights) {
   return prep && prep->nodes == g.nodes.size() && prep->only.size() == g.nodes.size() &&
-         prep->parent_split.size() == g.nodes.size() && prep->weights == weights;
+         prep->parent_split.size() == g.nodes.size() && prep->keys.size() == g.nodes.size() &&
+         prep->interval_begin.size() == interval_offset(g.levels() + 1) && prep->weights == weights;
 }
 
 }  // namespace arg

@@ -2,12 +2,27 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "graph/arg_graph.hpp"
 #include "match/weights.hpp"
 
 namespace arg {
+
+// What the candidate scan of match_graphs reads of a node, packed: a node record is 256 bytes,
+// and reading these few fields from records spread over 64 kB was most of a scan's time.
+struct MatchKey {
+  std::int32_t parent = -1;
+  std::uint32_t interval = 0;
+  float a = 0, l = 0, r = 0, theta = 0, phi = 0;  // the loss's attributes (node_loss)
+};
+
+// Where level r's entries start in MatchPrep::interval_begin: 2^r + 1 entries a level.
+inline std::size_t interval_offset(int r) {
+  return (std::size_t(1) << r) - 1 + std::size_t(r);
+}
 
 // What match_graphs would otherwise work out from one graph at every comparison (a quarter of
 // a comparison's instructions on SHREC 2007): a ranking prepares its query once, an evaluation
@@ -26,6 +41,10 @@ struct MatchPrep {
   // Per node: its only neighbour in the interval below ([0]) and above ([1]), -1 when it has
   // none or several.
   std::vector<std::array<int, 2>> only;
+  std::vector<MatchKey> keys;  // per node
+  // Per level r, where each interval's nodes start (nodes of a level are sorted by interval):
+  // interval_begin[interval_offset(r) + k] for k in 0 .. 2^r, the last being the level's end.
+  std::vector<int> interval_begin;
   // Per node, for Tung and Schmitt's rule: the distinct parents of its neighbours below, then
   // of those above, each in adjacency order (roots' neighbours have none):
   // parents[parent_begin[i], parent_split[i]) below, [parent_split[i], parent_begin[i + 1]) above.
@@ -49,6 +68,9 @@ bool prep_fits(const MatchPrep* prep, const ArgGraph& g, const Weights& weights)
 // weights.
 void prepare_only_neighbours(const ArgGraph& g, std::vector<std::array<int, 2>>& only);
 void prepare_neighbour_parents(const ArgGraph& g, MatchPrep& out);
+void prepare_keys(const ArgGraph& g, std::vector<MatchKey>& keys);
+// Level r's part of interval_begin (2^r + 1 entries from `out`).
+void prepare_interval_begin(const ArgGraph& g, int r, int* out);
 void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out);
 
 }  // namespace arg

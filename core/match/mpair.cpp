@@ -23,6 +23,8 @@ struct Side {
   // MatchPrep when it has one, else worked out into `own_only`.
   const std::array<int, 2>* only = nullptr;
   std::vector<std::array<int, 2>> own_only;
+  const MatchKey* key = nullptr;  // per node, likewise
+  std::vector<MatchKey> own_keys;
   const MatchPrep* prep = nullptr;  // its parents of neighbours, when it has a MatchPrep
 
   void reset(const ArgGraph& graph, const MatchPrep* given) {
@@ -32,9 +34,12 @@ struct Side {
     prep = given && given->nodes == graph.nodes.size() ? given : nullptr;
     if (prep) {
       only = prep->only.data();
+      key = prep->keys.data();
     } else {
       prepare_only_neighbours(graph, own_only);
+      prepare_keys(graph, own_keys);
       only = own_only.data();
+      key = own_keys.data();
     }
   }
   const ArgNode& node(int i) const { return g->nodes[std::size_t(i)]; }
@@ -56,7 +61,7 @@ struct Side {
   }
 
   int parent_group(int i) const {
-    int p = node(i).parent;
+    int p = key[i].parent;
     return p < 0 ? -2 : group[std::size_t(p)];  // -2: a root, whose "parent" always matches
   }
 };
@@ -215,12 +220,14 @@ double match_graphs(const ArgGraph& gx, const MatchPrep* px, const ArgGraph& gy,
               ye = int(gy.level_begin[std::size_t(r) + 1]);
     const int first_group = int(s.groups.size());
     // Where each interval's nodes start in Y's level (nodes are sorted by interval).
-    const int intervals = 1 << r;
-    s.y_interval_begin.assign(std::size_t(intervals) + 1, ye);
-    for (int n = ye - 1; n >= yb; --n) s.y_interval_begin[gy.nodes[std::size_t(n)].interval] = n;
-    for (int k = intervals - 1; k >= 0; --k)
-      s.y_interval_begin[std::size_t(k)] =
-          std::min(s.y_interval_begin[std::size_t(k)], s.y_interval_begin[std::size_t(k) + 1]);
+    const int* y_interval_begin;
+    if (Y.prep) {
+      y_interval_begin = Y.prep->interval_begin.data() + interval_offset(r);
+    } else {
+      s.y_interval_begin.resize((std::size_t(1) << r) + 1);
+      prepare_interval_begin(gy, r, s.y_interval_begin.data());
+      y_interval_begin = s.y_interval_begin.data();
+    }
     if (w.tung_rule) {
       s.x_parents.start_level(xb, xe);
       s.y_parents.start_level(yb, ye);
@@ -230,15 +237,16 @@ double match_graphs(const ArgGraph& gx, const MatchPrep* px, const ArgGraph& gy,
       const int m = sums->order[std::size_t(k)];
       const int pg = X.parent_group(m);
       if (pg == -1) continue;  // parent unmatched: the subtree stays unmatched
+      const MatchKey& km = X.key[m];
       const ArgNode& nm = gx.nodes[std::size_t(m)];
       int best = -1;
       double best_loss = 0, best_sim = -1;
-      // Only Y's nodes of nm's interval can be candidates.
-      const int y_end = s.y_interval_begin[std::size_t(nm.interval) + 1];
-      for (int n = s.y_interval_begin[nm.interval]; n < y_end; ++n) {
+      // Only Y's nodes of m's interval can be candidates.
+      const int y_end = y_interval_begin[km.interval + 1];
+      for (int n = y_interval_begin[km.interval]; n < y_end; ++n) {
         if (!candidate(X, Y, m, n, pg)) continue;
         if (w.tung_rule && !neighbours_agree(s.x_parents.of(X, m), s.y_parents.of(Y, n))) continue;
-        const double loss = node_loss(nm, gy.nodes[std::size_t(n)], gx.levels(), w);
+        const double loss = node_loss(km, Y.key[n], gx.levels(), w);
         if (best >= 0 && loss > best_loss) continue;
         // Equal losses are settled by the larger sim, computed only then.
         if (best >= 0 && loss == best_loss) {

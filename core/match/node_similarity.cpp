@@ -38,19 +38,4 @@ double node_sim(const ArgNode& m, const ArgNode& n, const Weights& w) {
   return sim_terms(m, n, std::min(m.a, n.a), std::min(m.l, n.l), std::min(m.v, n.v), w);
 }
 
-double node_loss(const ArgNode& m, const ArgNode& n, int levels, const Weights& w) {
-  const double per_level = levels + 1.0;
-  const double d[5] = {
-      (double(m.a) - n.a) * per_level,
-      (double(m.l) - n.l) * per_level,
-      (std::min(double(m.r), 2.0) - std::min(double(n.r), 2.0)) / 2.0,
-      (double(m.theta) - n.theta) / M_PI,
-      (double(m.phi) - n.phi) / M_PI,
-  };
-  const double k[5] = {w.alpha_l, w.beta_l, w.gamma_l, w.delta_l, w.eps_l};
-  double loss = 0;
-  for (int i = 0; i < 5; ++i) loss += k[i] * (w.l2 ? d[i] * d[i] : std::fabs(d[i]));
-  return loss;
-}
-
 }  // namespace arg

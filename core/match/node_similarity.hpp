@@ -1,7 +1,9 @@
 // The per-node terms of matching: loss (which candidate wins) and sim (what a match is worth).
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "graph/arg_graph.hpp"
 #include "match/weights.hpp"
@@ -33,7 +35,22 @@ double node_sim(const NodeMass& m, const NodeMass& n, const Weights& w);
 double node_sim(const ArgNode& m, const ArgNode& n, const Weights& w);
 
 // loss(m, n) over a and l (scaled to their level's total), r (capped at 2 RMS radii, halved),
-// theta and phi (over pi); L1 or squared differences per the weights.
-double node_loss(const ArgNode& m, const ArgNode& n, int levels, const Weights& w);
+// theta and phi (over pi); L1 or squared differences per the weights. `m` and `n` are nodes or
+// anything with their float fields a, l, r, theta and phi (match/match_prep.hpp's MatchKey).
+template <class M, class N>
+double node_loss(const M& m, const N& n, int levels, const Weights& w) {
+  const double per_level = levels + 1.0;
+  const double d[5] = {
+      (double(m.a) - n.a) * per_level,
+      (double(m.l) - n.l) * per_level,
+      (std::min(double(m.r), 2.0) - std::min(double(n.r), 2.0)) / 2.0,
+      (double(m.theta) - n.theta) / M_PI,
+      (double(m.phi) - n.phi) / M_PI,
+  };
+  const double k[5] = {w.alpha_l, w.beta_l, w.gamma_l, w.delta_l, w.eps_l};
+  double loss = 0;
+  for (int i = 0; i < 5; ++i) loss += k[i] * (w.l2 ? d[i] * d[i] : std::fabs(d[i]));
+  return loss;
+}
 
 }  // namespace arg
