@@ -106,10 +106,16 @@ void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out) {
   }
 }
 
+bool prep_shape_fits(const MatchPrep* prep, const ArgGraph& g) {
+  const std::size_t n = g.nodes.size();
+  return prep && prep->nodes == n && prep->only.size() == n && prep->parent_split.size() == n &&
+         prep->parent_begin.size() == n + 1 && prep->keys.size() == n &&
+         prep->plain.self.size() == n && prep->plain.order.size() == n &&
+         prep->interval_begin.size() == interval_offset(g.levels() + 1);
+}
+
 bool prep_fits(const MatchPrep* prep, const ArgGraph& g, const Weights& weights) {
-  return prep && prep->nodes == g.nodes.size() && prep->only.size() == g.nodes.size() &&
-         prep->parent_split.size() == g.nodes.size() && prep->keys.size() == g.nodes.size() &&
-         prep->interval_begin.size() == interval_offset(g.levels() + 1) && prep->weights == weights;
+  return prep_shape_fits(prep, g) && prep->weights == weights;
 }
 
 }  // namespace arg

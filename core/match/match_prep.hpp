@@ -11,7 +11,7 @@
 
 namespace arg {
 
-// What the candidate scan of match_graphs reads of a node, packed: a node record is 256 bytes,
+// What the candidate scan of match_graphs reads of a node, packed: a node record is 248 bytes,
 // and reading these few fields from records spread over 64 kB was most of a scan's time.
 struct MatchKey {
   std::int32_t parent = -1;
@@ -60,8 +60,10 @@ struct MatchPrep {
 // Fills `out` for `g` and `weights` (the weights as passed to arg_similarity).
 void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out);
 
-// Whether `prep` was made for a graph of g's shape with these weights (a cheap guard: the
-// caller keeps prep and graph together).
+// Whether `prep` was made for a graph of g's shape (node count, levels), and also with these
+// weights (a cheap guard that keeps every read in bounds: the caller keeps prep and graph
+// together).
+bool prep_shape_fits(const MatchPrep* prep, const ArgGraph& g);
 bool prep_fits(const MatchPrep* prep, const ArgGraph& g, const Weights& weights);
 
 // Its parts one by one (match_graphs' own path when it gets no prep); `w` is the effective

@@ -31,7 +31,7 @@ struct Side {
     g = &graph;
     group.assign(graph.nodes.size(), -1);
     label.assign(graph.nodes.size(), 0);
-    prep = given && given->nodes == graph.nodes.size() ? given : nullptr;
+    prep = prep_shape_fits(given, graph) ? given : nullptr;
     if (prep) {
       only = prep->only.data();
       key = prep->keys.data();
@@ -203,8 +203,7 @@ double match_graphs(const ArgGraph& gx, const MatchPrep* px, const ArgGraph& gy,
   s.groups.clear();
   if (group_sim) group_sim->clear();
   const int levels = std::min(gx.levels(), gy.levels());
-  const MatchPrep::Sums* sums =
-      px && px->nodes == gx.nodes.size() ? px->sums(w.lambda_4 > 0) : nullptr;
+  const MatchPrep::Sums* sums = X.prep ? X.prep->sums(w.lambda_4 > 0) : nullptr;
   if (!sums) {
     prepare_sums(gx, w, s.own_sums);
     sums = &s.own_sums;
