@@ -13,10 +13,14 @@ const MatchPrep::Sums* MatchPrep::sums(bool colour_counts) const {
   return coloured.self.size() == nodes ? &coloured : nullptr;
 }
 
-void prepare_only_neighbours(const ArgGraph& g, std::vector<std::array<int, 2>>& only) {
+void prepare_nodes(const ArgGraph& g, std::vector<std::array<int, 2>>& only,
+                   std::vector<MatchKey>& keys) {
+  // One pass: what both read lies in the first 64 bytes of a node's record.
   only.resize(g.nodes.size());
+  keys.resize(g.nodes.size());
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
     const ArgNode& n = g.nodes[i];
+    keys[i] = {n.parent, n.interval, n.a, n.l, n.r, n.theta, n.phi};
     const std::uint32_t* adj = g.adjacency.data() + n.adj_begin;
     int found[2] = {-1, -1}, count[2] = {0, 0};
     for (std::uint32_t k = 0; k < n.adj_count; ++k) {
@@ -53,14 +57,6 @@ void prepare_neighbour_parents(const ArgGraph& g, MatchPrep& out) {
   out.parent_begin[n] = std::uint32_t(out.parents.size());
 }
 
-void prepare_keys(const ArgGraph& g, std::vector<MatchKey>& keys) {
-  keys.resize(g.nodes.size());
-  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
-    const ArgNode& n = g.nodes[i];
-    keys[i] = {n.parent, n.interval, n.a, n.l, n.r, n.theta, n.phi};
-  }
-}
-
 void prepare_interval_begin(const ArgGraph& g, int r, int* out) {
   const int b = int(g.level_begin[std::size_t(r)]), e = int(g.level_begin[std::size_t(r) + 1]);
   const int intervals = 1 << r;
@@ -69,13 +65,16 @@ void prepare_interval_begin(const ArgGraph& g, int r, int* out) {
   for (int k = intervals - 1; k >= 0; --k) out[k] = std::min(out[k], out[k + 1]);
 }
 
-void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out) {
+void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out,
+                  std::vector<std::pair<double, int>>* scratch) {
   const std::size_t n = g.nodes.size();
   out.self.resize(n);
   out.total = 0;
   for (std::size_t m = 0; m < n; ++m) out.total += out.self[m] = node_self_sim(g.nodes[m], w);
   // Sorted as (-sim, index) pairs, which keeps the keys beside each other in memory.
-  std::vector<std::pair<double, int>> keyed(n);
+  std::vector<std::pair<double, int>> own;
+  std::vector<std::pair<double, int>>& keyed = scratch ? *scratch : own;
+  keyed.resize(n);
   for (std::size_t m = 0; m < n; ++m) keyed[m] = {-out.self[m], int(m)};
   out.order.resize(n);
   for (int r = 0; r <= g.levels(); ++r) {
@@ -88,9 +87,8 @@ void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out) {
 void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out) {
   out.weights = weights;
   out.nodes = g.nodes.size();
-  prepare_only_neighbours(g, out.only);
+  prepare_nodes(g, out.only, out.keys);
   prepare_neighbour_parents(g, out);
-  prepare_keys(g, out.keys);
   out.interval_begin.resize(interval_offset(g.levels() + 1));
   for (int r = 0; r <= g.levels(); ++r)
     prepare_interval_begin(g, r, out.interval_begin.data() + interval_offset(r));

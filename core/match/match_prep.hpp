@@ -4,6 +4,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "graph/arg_graph.hpp"
@@ -67,12 +68,14 @@ bool prep_shape_fits(const MatchPrep* prep, const ArgGraph& g);
 bool prep_fits(const MatchPrep* prep, const ArgGraph& g, const Weights& weights);
 
 // Its parts one by one (match_graphs' own path when it gets no prep); `w` is the effective
-// weights.
-void prepare_only_neighbours(const ArgGraph& g, std::vector<std::array<int, 2>>& only);
+// weights. prepare_nodes fills the only-neighbours and the keys.
+void prepare_nodes(const ArgGraph& g, std::vector<std::array<int, 2>>& only,
+                   std::vector<MatchKey>& keys);
 void prepare_neighbour_parents(const ArgGraph& g, MatchPrep& out);
-void prepare_keys(const ArgGraph& g, std::vector<MatchKey>& keys);
 // Level r's part of interval_begin (2^r + 1 entries from `out`).
 void prepare_interval_begin(const ArgGraph& g, int r, int* out);
-void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out);
+// `keyed` (optional) is scratch space kept by a caller that prepares many graphs.
+void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out,
+                  std::vector<std::pair<double, int>>* keyed = nullptr);
 
 }  // namespace arg

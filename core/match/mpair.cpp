@@ -36,8 +36,7 @@ struct Side {
       only = prep->only.data();
       key = prep->keys.data();
     } else {
-      prepare_only_neighbours(graph, own_only);
-      prepare_keys(graph, own_keys);
+      prepare_nodes(graph, own_only, own_keys);
       only = own_only.data();
       key = own_keys.data();
     }
@@ -145,8 +144,10 @@ struct Founded {
 
 struct Scratch {
   Side x, y;
-  MatchPrep::Sums own_sums;           // X's self sims and order when it comes without a MatchPrep
-  std::vector<int> y_interval_begin;  // per interval of the current level: first Y node
+  MatchPrep::Sums own_sums;
+  std::vector<std::pair<double, int>> keyed;  // prepare_sums' scratch           // X's self sims
+                                              // and order when it comes without a MatchPrep
+  std::vector<int> y_interval_begin;          // per interval of the current level: first Y node
   LevelParents x_parents, y_parents;
   std::vector<Founded> groups;
   std::vector<std::pair<int, int>> extra_x, extra_y;  // (group, node) beyond the founders
@@ -205,7 +206,7 @@ double match_graphs(const ArgGraph& gx, const MatchPrep* px, const ArgGraph& gy,
   const int levels = std::min(gx.levels(), gy.levels());
   const MatchPrep::Sums* sums = X.prep ? X.prep->sums(w.lambda_4 > 0) : nullptr;
   if (!sums) {
-    prepare_sums(gx, w, s.own_sums);
+    prepare_sums(gx, w, s.own_sums, &s.keyed);
     sums = &s.own_sums;
   }
   if (self_x) *self_x = sums->total;
