@@ -36,6 +36,16 @@ SET arg.query_cache = off;
 SELECT bool_and(w.sim = a.descr <~> b.descr) AS same_scores
 FROM with_cache w JOIN few a ON a.class = w.a JOIN few b ON b.class = w.b;
 RESET arg.query_cache;
+-- With the cache, a value that repeats is also prepared for matching once (for each weights
+-- it meets): the same scores to the bit, for other weights and with colour too.
+CREATE TABLE weighed AS
+SELECT a.class AS a, b.class AS b, w, arg_sim(a.descr, b.descr, w::arg_weights) AS sim
+FROM few a, few b, unnest(ARRAY['mrg', 'colour', 'arg']) AS w;
+SET arg.query_cache = off;
+SELECT bool_and(w.sim = arg_sim(a.descr, b.descr, w.w::arg_weights)) AS same_weighed_scores,
+       count(*) AS pairs
+FROM weighed w JOIN few a ON a.class = w.a JOIN few b ON b.class = w.b;
+RESET arg.query_cache;
 
 -- Each class of failure has its SQLSTATE: bad input 22P02 (text of a type) or 22023 (an
 -- argument), binary input of a type 22P03, over a cap 54000, cancelled 57014.
