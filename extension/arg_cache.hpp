@@ -52,7 +52,8 @@ const arg::ArgGraph& graph_of(GraphCacheHolder* holder, int slot, const GraphArg
 // Inside guarded(), after graph_of(): the matcher's per-graph parts of the slot's graph for
 // these weights, made once and kept while the slot keeps its value (a ranking's query), or
 // nullptr when the slot's value just changed (a ranking's rows: preparing each would cost more
-// than it saves) or there is no holder.
+// than it saves) or there is no holder. A value found by its toast pointer is prepared from its
+// second call on; an inline value only from its third (its second re-reads it to keep its bytes).
 const arg::MatchPrep* match_prep_of(GraphCacheHolder* holder, int slot,
                                     const arg::Weights& weights);
 

@@ -69,5 +69,5 @@ RESET statement_timeout;
 \set VERBOSITY default
 SELECT 'still answering' AS session;
 
-DROP TABLE big, few, with_cache;
+DROP TABLE big, few, with_cache, weighed;
 DROP EXTENSION arg;

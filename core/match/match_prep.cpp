@@ -1,4 +1,5 @@
-// Only-neighbours, self sims and the order of each level's nodes, worked out once per graph.
+// A graph's part of matching, worked out once: only-neighbours, packed keys, parents of
+// neighbours, where intervals start, self sims and each level's order.
 #include "match/match_prep.hpp"
 
 #include <algorithm>
@@ -87,6 +88,7 @@ void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out,
 void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out) {
   out.weights = weights;
   out.nodes = g.nodes.size();
+  out.level_begin = g.level_begin;
   prepare_nodes(g, out.only, out.keys);
   prepare_neighbour_parents(g, out);
   out.interval_begin.resize(interval_offset(g.levels() + 1));
@@ -95,7 +97,7 @@ void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out) {
   Weights plain = weights;
   plain.lambda_4 = 0;
   prepare_sums(g, plain, out.plain);
-  if (g.summary.has_colour && weights.lambda_4 > 0) {
+  if (g.summary.has_colour && weights.lambda_4 != 0) {
     prepare_sums(g, weights, out.coloured);
   } else {
     out.coloured.self.clear();
@@ -106,9 +108,9 @@ void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out) {
 
 bool prep_shape_fits(const MatchPrep* prep, const ArgGraph& g) {
   const std::size_t n = g.nodes.size();
-  return prep && prep->nodes == n && prep->only.size() == n && prep->parent_split.size() == n &&
-         prep->parent_begin.size() == n + 1 && prep->keys.size() == n &&
-         prep->plain.self.size() == n && prep->plain.order.size() == n &&
+  return prep && prep->nodes == n && prep->level_begin == g.level_begin && prep->only.size() == n &&
+         prep->parent_split.size() == n && prep->parent_begin.size() == n + 1 &&
+         prep->keys.size() == n && prep->plain.self.size() == n && prep->plain.order.size() == n &&
          prep->interval_begin.size() == interval_offset(g.levels() + 1);
 }
 

@@ -37,8 +37,9 @@ struct MatchPrep {
     double total = 0;          // over every node: the graph's share of SIM's denominator
     std::vector<int> order;    // per level, its nodes by decreasing self sim, ties by index
   };
-  Weights weights;        // as given to prepare_match (before the colour rule)
-  std::size_t nodes = 0;  // the graph's node count, checked on use
+  Weights weights;                         // as given to prepare_match (before the colour rule)
+  std::size_t nodes = 0;                   // the graph's node count, checked on use
+  std::vector<std::uint32_t> level_begin;  // the graph's level table, checked on use
   // Per node: its only neighbour in the interval below ([0]) and above ([1]), -1 when it has
   // none or several.
   std::vector<std::array<int, 2>> only;
@@ -52,18 +53,19 @@ struct MatchPrep {
   std::vector<std::uint32_t> parent_begin, parent_split;
   std::vector<int> parents;
   Sums plain;     // lambda_4 = 0: when either graph has no colour
-  Sums coloured;  // the weights' lambda_4: filled when the graph has colour and lambda_4 > 0
+  Sums coloured;  // the weights' lambda_4: filled when the graph has colour and lambda_4 != 0
 
-  // The sums for the effective lambda_4 (0 or weights.lambda_4), or nullptr when not held.
+  // The sums for the effective lambda_4 (0, or weights.lambda_4 when colour counts), or nullptr
+  // when not held.
   const Sums* sums(bool colour_counts) const;
 };
 
 // Fills `out` for `g` and `weights` (the weights as passed to arg_similarity).
 void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out);
 
-// Whether `prep` was made for a graph of g's shape (node count, levels), and also with these
-// weights (a cheap guard that keeps every read in bounds: the caller keeps prep and graph
-// together).
+// Whether `prep` was made for a graph of g's shape (node count and level table), and also
+// with these weights (a cheap guard that keeps every read in bounds: the caller keeps prep and
+// graph together).
 bool prep_shape_fits(const MatchPrep* prep, const ArgGraph& g);
 bool prep_fits(const MatchPrep* prep, const ArgGraph& g, const Weights& weights);
 

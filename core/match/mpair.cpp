@@ -74,7 +74,8 @@ struct NeighbourParents {
   int count[2];
 };
 
-// Fills `np` for node i.
+// Fills `np` for node i. Kept out of line: it runs once a node and level, while the check in
+// LevelParents::of, inlined into the candidate scan, runs at every candidate.
 [[gnu::noinline]] void find_neighbour_parents(const Side& side, int i, NeighbourParents& np) {
   np.count[0] = np.count[1] = 0;
   auto add = [&np](int up, int gp) {
@@ -144,9 +145,8 @@ struct Founded {
 
 struct Scratch {
   Side x, y;
-  MatchPrep::Sums own_sums;
-  std::vector<std::pair<double, int>> keyed;  // prepare_sums' scratch           // X's self sims
-                                              // and order when it comes without a MatchPrep
+  MatchPrep::Sums own_sums;  // X's self sims and order when it comes without a MatchPrep
+  std::vector<std::pair<double, int>> keyed;  // prepare_sums' scratch
   std::vector<int> y_interval_begin;          // per interval of the current level: first Y node
   LevelParents x_parents, y_parents;
   std::vector<Founded> groups;
@@ -204,7 +204,7 @@ double match_graphs(const ArgGraph& gx, const MatchPrep* px, const ArgGraph& gy,
   s.groups.clear();
   if (group_sim) group_sim->clear();
   const int levels = std::min(gx.levels(), gy.levels());
-  const MatchPrep::Sums* sums = X.prep ? X.prep->sums(w.lambda_4 > 0) : nullptr;
+  const MatchPrep::Sums* sums = X.prep ? X.prep->sums(w.lambda_4 != 0) : nullptr;
   if (!sums) {
     prepare_sums(gx, w, s.own_sums, &s.keyed);
     sums = &s.own_sums;
@@ -314,10 +314,6 @@ double match_graphs(const ArgGraph& gx, const MatchPrep* px, const ArgGraph& gy,
   }
   return numerator;
 }
-
-}  // namespace arg
-
-namespace arg {
 
 double match_graphs(const ArgGraph& x, const ArgGraph& y, const Weights& weights,
                     std::vector<MatchGroup>* groups, std::vector<double>* group_sim,

@@ -43,7 +43,9 @@ struct MatchPrep;
 
 // The same, with the per-graph parts from each graph's MatchPrep (match/match_prep.hpp) where
 // given (nullptr: worked out here). `weights` are the effective ones (lambda_4 = 0 unless both
-// graphs have colour); each prep must have been made for its graph as it is now.
+// graphs have colour); each prep must have been made for its graph as it is now, with these
+// weights before that rule (arg_similarity checks this with prep_fits; only the graph's shape
+// is checked here, which keeps every read in bounds).
 double match_graphs(const ArgGraph& x, const MatchPrep* px, const ArgGraph& y, const MatchPrep* py,
                     const Weights& weights, std::vector<MatchGroup>* groups = nullptr,
                     std::vector<double>* group_sim = nullptr, double* self_x = nullptr);

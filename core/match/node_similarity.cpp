@@ -2,7 +2,6 @@
 #include "match/node_similarity.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 namespace arg {
 

@@ -82,7 +82,7 @@ double similarity_ordered(const ArgGraph& x, const MatchPrep* px, const ArgGraph
       return p.level != q.level ? p.level < q.level : p.a_node < q.a_node;
     });
   }
-  const MatchPrep::Sums* sums_y = prep_shape_fits(py, y) ? py->sums(w.lambda_4 > 0) : nullptr;
+  const MatchPrep::Sums* sums_y = prep_shape_fits(py, y) ? py->sums(w.lambda_4 != 0) : nullptr;
   const double denominator = 0.5 * (self_x + (sums_y ? sums_y->total : self_mass(y, w)));
   if (!(denominator > 0)) return 0.0;
   return std::clamp(1.0 - numerator / denominator, 0.0, 1.0);

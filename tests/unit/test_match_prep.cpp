@@ -96,6 +96,15 @@ TEST(MatchPrep, APrepForOtherWeightsOrAnotherGraphIsNotUsed) {
   ASSERT_NE(graphs()[0].nodes.size(), graphs()[3].nodes.size());
   EXPECT_FALSE(prep_fits(&wrong_graph, graphs()[0], arg_w));
   EXPECT_FALSE(prep_fits(nullptr, graphs()[0], arg_w));
+  // Same node count and levels, another layout of the levels: its order and keys would point
+  // into the wrong levels, so it must not fit either.
+  MatchPrep own;
+  prepare_match(graphs()[0], arg_w, own);
+  ArgGraph moved = graphs()[0];
+  ASSERT_GT(moved.level_begin[2], moved.level_begin[1] + 1);
+  ++moved.level_begin[1];
+  EXPECT_TRUE(prep_shape_fits(&own, graphs()[0]));
+  EXPECT_FALSE(prep_shape_fits(&own, moved));
   const double s0 = arg_similarity(graphs()[0], graphs()[1], arg_w);
   EXPECT_EQ(arg_similarity(graphs()[0], graphs()[1], arg_w, nullptr, &wrong_weights, nullptr), s0);
   EXPECT_EQ(arg_similarity(graphs()[0], graphs()[1], arg_w, nullptr, &wrong_graph, nullptr), s0);

@@ -69,10 +69,27 @@ struct MethodDistance {
     return graph ? arg::arg_similarity(x.graph, y.graph, weights)
                  : descriptor->distance(x.descriptor.at(name), y.descriptor.at(name));
   }
+  // Graph methods only: with each graph's MatchPrep (the same result, for less).
   double operator()(const Model& x, const arg::MatchPrep& px, const Model& y,
                     const arg::MatchPrep& py) const {
-    return graph ? arg::arg_similarity(x.graph, y.graph, weights, nullptr, &px, &py)
-                 : descriptor->distance(x.descriptor.at(name), y.descriptor.at(name));
+    return arg::arg_similarity(x.graph, y.graph, weights, nullptr, &px, &py);
+  }
+  // Each model's MatchPrep for these weights (empty for descriptor methods or failed models);
+  // `us`, when given, receives each one's time in microseconds.
+  std::vector<arg::MatchPrep> prepare(const std::vector<Model>& models, int threads,
+                                      std::vector<double>* us = nullptr) const {
+    std::vector<arg::MatchPrep> preps(models.size());
+    if (us) us->assign(models.size(), 0.0);
+    if (!graph) return preps;
+    argtool::run_with_progress("prepare " + name, models.size(), threads, [&](std::size_t i) {
+      if (!models[i].error.empty()) return;
+      auto t0 = std::chrono::steady_clock::now();
+      arg::prepare_match(models[i].graph, weights, preps[i]);
+      if (us)
+        (*us)[i] = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0)
+                       .count();
+    });
+    return preps;
   }
 };
 
@@ -95,17 +112,8 @@ MethodResult run_method(const std::string& method, const std::vector<Model>& mod
   const bool graph = is_graph_method(method);
   const MethodDistance between(method, a);
   // Each graph's own part of matching, once (timed with the comparisons, spread over them).
-  std::vector<arg::MatchPrep> preps(graph ? n : 0);
-  std::vector<double> prep_us(n, 0.0);
-  if (graph)
-    argtool::run_with_progress("prepare " + method, n, a.threads, [&](std::size_t i) {
-      if (!models[i].error.empty()) return;
-      auto p0 = std::chrono::steady_clock::now();
-      arg::prepare_match(models[i].graph, between.weights, preps[i]);
-      prep_us[i] =
-          std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - p0).count();
-    });
-  const arg::MatchPrep none;
+  std::vector<double> prep_us;
+  const std::vector<arg::MatchPrep> preps = between.prepare(models, a.threads, &prep_us);
   // Every distance is symmetric: each row computes the pairs to its right and mirrors them.
   argtool::run_with_progress("compare " + method, n, a.threads, [&](std::size_t i) {
     if (!models[i].error.empty()) return;
@@ -113,8 +121,8 @@ MethodResult run_method(const std::string& method, const std::vector<Model>& mod
     std::size_t count = 0;
     for (std::size_t j = i + 1; j < n; ++j) {
       if (!models[j].error.empty()) continue;
-      const double d = graph ? between(models[i], preps[i], models[j], preps[j])
-                             : between(models[i], none, models[j], none);
+      const double d =
+          graph ? between(models[i], preps[i], models[j], preps[j]) : between(models[i], models[j]);
       distance[i * n + j] = distance[j * n + i] = d;
       ++count;
     }
@@ -155,11 +163,16 @@ arg::RetrievalScores run_queries(const std::string& method, const std::vector<Mo
                                  const arg::LabelSet& set, const EvalArgs& a) {
   const MethodDistance between(method, a);
   const std::size_t q = queries.size(), n = models.size();
+  const std::vector<arg::MatchPrep> query_preps = between.prepare(queries, a.threads),
+                                    model_preps = between.prepare(models, a.threads);
   std::vector<double> distance(q * n, 0.0);
   argtool::run_with_progress("query " + method, q, a.threads, [&](std::size_t i) {
     if (!queries[i].error.empty()) return;
     for (std::size_t j = 0; j < n; ++j)
-      if (models[j].error.empty()) distance[i * n + j] = between(queries[i], models[j]);
+      if (models[j].error.empty())
+        distance[i * n + j] = between.graph
+                                  ? between(queries[i], query_preps[i], models[j], model_preps[j])
+                                  : between(queries[i], models[j]);
   });
   std::vector<int> query_label(q);
   std::vector<bool> query_valid(q), valid(n);
