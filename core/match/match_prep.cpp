@@ -11,7 +11,7 @@ namespace arg {
 
 const MatchPrep::Sums* MatchPrep::sums(bool colour_counts) const {
   if (!colour_counts) return &plain;
-  return coloured.self.size() == nodes ? &coloured : nullptr;
+  return coloured.self.size() == plain.self.size() ? &coloured : nullptr;
 }
 
 void prepare_nodes(const ArgGraph& g, std::vector<std::array<int, 2>>& only,
@@ -87,7 +87,6 @@ void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out,
 
 void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out) {
   out.weights = weights;
-  out.nodes = g.nodes.size();
   out.level_begin = g.level_begin;
   prepare_nodes(g, out.only, out.keys);
   prepare_neighbour_parents(g, out);
@@ -108,7 +107,7 @@ void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out) {
 
 bool prep_shape_fits(const MatchPrep* prep, const ArgGraph& g) {
   const std::size_t n = g.nodes.size();
-  return prep && prep->nodes == n && prep->level_begin == g.level_begin && prep->only.size() == n &&
+  return prep && prep->level_begin == g.level_begin && prep->only.size() == n &&
          prep->parent_split.size() == n && prep->parent_begin.size() == n + 1 &&
          prep->keys.size() == n && prep->plain.self.size() == n && prep->plain.order.size() == n &&
          prep->interval_begin.size() == interval_offset(g.levels() + 1);

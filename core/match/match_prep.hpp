@@ -38,7 +38,6 @@ struct MatchPrep {
     std::vector<int> order;    // per level, its nodes by decreasing self sim, ties by index
   };
   Weights weights;                         // as given to prepare_match (before the colour rule)
-  std::size_t nodes = 0;                   // the graph's node count, checked on use
   std::vector<std::uint32_t> level_begin;  // the graph's level table, checked on use
   // Per node: its only neighbour in the interval below ([0]) and above ([1]), -1 when it has
   // none or several.
