@@ -1,8 +1,9 @@
-// Boundary loops from the edges with one face, walked in their faces' direction, then fans.
+// Fans over the boundary loops of an open manifold mesh.
 #include "mesh/fill_holes.hpp"
 
 #include <vector>
 
+#include "mesh/boundary_loops.hpp"
 #include "mesh/mesh_edges.hpp"
 
 namespace arg {
@@ -11,76 +12,31 @@ Mesh fill_holes(const Mesh& mesh, FillReport* report) {
   FillReport local;
   FillReport& rep = report ? *report : local;
   rep = FillReport{};
-  const MeshEdges edges = mesh_edges(mesh.F);
-  // Each boundary edge as its face runs along it (from -> to), and the face.
-  struct Rim {
-    int from, to, face;
-  };
-  std::vector<Rim> rims;
-  std::vector<int> leaving(std::size_t(mesh.V.rows()), -1);  // the rim leaving a vertex
-  std::vector<char> pinched(std::size_t(mesh.V.rows()), 0);  // more than one rim leaves it
-  for (int e = 0; e < edges.count(); ++e) {
-    if (edges.faces(e) != 1) continue;
-    const int f = edges.face_of[std::size_t(edges.face_begin[std::size_t(e)])];
-    const int k = edges.corner_of[std::size_t(edges.face_begin[std::size_t(e)])];
-    const Rim r{mesh.F(f, k), mesh.F(f, (k + 1) % 3), f};
-    if (leaving[std::size_t(r.from)] >= 0) pinched[std::size_t(r.from)] = 1;
-    leaving[std::size_t(r.from)] = int(rims.size());
-    rims.push_back(r);
-  }
-  if (rims.empty()) return mesh;
-
+  const BoundaryLoops found = boundary_loops(mesh, mesh_edges(mesh.F));
+  rep.skipped_loops = found.skipped;
   std::vector<Eigen::RowVector3d> new_vertices;
   std::vector<Eigen::RowVector3i> new_faces;
   std::vector<Eigen::RowVector3f> new_colours;
-  std::vector<char> done(rims.size(), 0);
-  std::vector<int> loop;
-  for (std::size_t start = 0; start < rims.size(); ++start) {
-    if (done[start]) continue;
-    // Walk from rim to rim until the loop closes, or give up at a pinched vertex.
-    loop.clear();
-    bool simple = true;
-    for (int r = int(start);;) {
-      done[std::size_t(r)] = 1;
-      loop.push_back(r);
-      const int v = rims[std::size_t(r)].to;
-      if (pinched[std::size_t(v)] || pinched[std::size_t(rims[std::size_t(r)].from)])
-        simple = false;
-      const int next = leaving[std::size_t(v)];
-      if (next < 0) {  // cannot happen on a manifold mesh: a rim always continues
-        simple = false;
-        break;
-      }
-      if (next == int(start)) break;
-      if (done[std::size_t(next)]) {
-        simple = false;
-        break;
-      }
-      r = next;
-    }
-    if (!simple || loop.size() < 3) {
-      ++rep.skipped_loops;
-      continue;
-    }
+  for (const BoundaryLoop& loop : found.loops) {
     ++rep.loops;
+    const std::size_t n = loop.vertices.size();
     Eigen::RowVector3f colour(0, 0, 0);
     if (mesh.has_colour())
-      for (int r : loop) colour += mesh.C.row(rims[std::size_t(r)].face);
-    colour /= float(loop.size());
+      for (int f : loop.faces) colour += mesh.C.row(f);
+    colour /= float(n);
     // The new faces run against the rim (to -> from), as the face across it would.
-    if (loop.size() == 3) {
-      new_faces.emplace_back(rims[std::size_t(loop[0])].to, rims[std::size_t(loop[0])].from,
-                             rims[std::size_t(loop[2])].from);
+    if (n == 3) {
+      new_faces.emplace_back(loop.vertices[1], loop.vertices[0], loop.vertices[2]);
       new_colours.push_back(colour);
       continue;
     }
     Eigen::RowVector3d centre(0, 0, 0);
-    for (int r : loop) centre += mesh.V.row(rims[std::size_t(r)].from);
-    centre /= double(loop.size());
+    for (int v : loop.vertices) centre += mesh.V.row(v);
+    centre /= double(n);
     const int c = int(mesh.V.rows() + Eigen::Index(new_vertices.size()));
     new_vertices.push_back(centre);
-    for (int r : loop) {
-      new_faces.emplace_back(rims[std::size_t(r)].to, rims[std::size_t(r)].from, c);
+    for (std::size_t i = 0; i < n; ++i) {
+      new_faces.emplace_back(loop.vertices[(i + 1) % n], loop.vertices[i], c);
       new_colours.push_back(colour);
     }
   }

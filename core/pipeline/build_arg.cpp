@@ -95,6 +95,7 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
   rep.nonmanifold_edges = clean.nonmanifold_edges;
   rep.components = prepared.components;
   rep.stitched_pairs = prepared.stitched_pairs;
+  rep.bridged_pieces = prepared.bridged_pieces;
   rep.set_aside_pieces = prepared.set_aside_pieces;
   rep.filled_loops = prepared.filled_loops;
   rep.proxy = prepared.proxy.has_value();

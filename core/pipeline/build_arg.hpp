@@ -27,6 +27,7 @@ struct BuildReport {
   std::size_t nonmanifold_edges = 0;
   std::size_t components = 0;        // of the surface measured (after stitching)
   std::size_t stitched_pairs = 0;    // rim vertices joined across tears (holes=fill)
+  std::size_t bridged_pieces = 0;    // tubes joining pieces that holes cut apart (holes=fill)
   std::size_t set_aside_pieces = 0;  // small pieces of a torn surface left out (holes=fill)
   std::size_t filled_loops = 0;      // holes closed (holes=fill)
   bool proxy = false;                // mu and the graph were computed on the watertight proxy

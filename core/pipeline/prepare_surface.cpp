@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "common/errors.hpp"
+#include "mesh/bridge_pieces.hpp"
 #include "mesh/connected_components.hpp"
 #include "mesh/face_subset.hpp"
 #include "mesh/fill_holes.hpp"
@@ -51,6 +52,11 @@ constexpr double kTearGap = 0.01;
 // bits a hole cut off (a fingertip, the end of a tail), which mu would otherwise reach only
 // through the proxy that rounds the shape's thin parts away.
 constexpr double kMainPiece = 0.9;
+// Rims of pieces farther apart than a tear but facing each other within this share of the
+// diagonal are joined by a tube (bridge_pieces.hpp): a hole wider than a limb (perturb's
+// large holes are balls of 6% of the diagonal) leaves the limb's stump and the limb that far
+// apart.
+constexpr double kBridgeGap = 0.15;
 
 // The faces of component 0 (clean_mesh then drops the vertices no kept face uses).
 Mesh main_piece(const Mesh& mesh, const std::vector<int>& component) {
@@ -101,6 +107,16 @@ void join_torn_pieces(Mesh& mesh, std::vector<int>& component, PreparedSurface& 
     if (report.nonmanifold_edges > 0) return;
     pieces = std::size_t(vertex_components(joined, piece));
   }
+  std::size_t tubes = 0;
+  if (pieces > 1) {
+    const Mesh bridged =
+        bridge_pieces(joined, mesh_edges(joined.F), piece, kBridgeGap * diagonal, &tubes, stop);
+    if (tubes > 0) {
+      joined = clean_again(bridged, report, stop);
+      if (report.nonmanifold_edges > 0) return;
+      pieces = std::size_t(vertex_components(joined, piece));
+    }
+  }
   std::vector<double> area = component_areas(joined, piece, pieces);
   double total = std::accumulate(area.begin(), area.end(), 0.0);
   if (pieces > 1 && area[0] >= kMainPiece * total && area[1] >= 0.01 * total) {
@@ -117,6 +133,7 @@ void join_torn_pieces(Mesh& mesh, std::vector<int>& component, PreparedSurface& 
   out.clean = report;
   out.components = pieces;
   out.stitched_pairs = pairs;
+  out.bridged_pieces = tubes;
   out.set_aside_pieces = set_aside;
 }
 

@@ -22,6 +22,7 @@ struct PreparedSurface {
   bool use_proxy = false;            // mu and the graph run on `proxy`
   std::size_t filled_loops = 0;      // holes closed by fill_holes (options.holes=fill)
   std::size_t stitched_pairs = 0;    // rim vertices joined across tears (holes=fill)
+  std::size_t bridged_pieces = 0;    // tubes joining pieces cut apart by holes (holes=fill)
   std::size_t set_aside_pieces = 0;  // small pieces of a torn surface left out (holes=fill)
   Mesh posed;  // the cleaned mesh (holes filled), centred, aligned and scaled (apply_pose)
   MeshEdges posed_edges;      // its edges

@@ -126,7 +126,8 @@ TEST(StitchPieces, ASplitScanIsOneSurfaceForMuNotAProxy) {
 
 TEST(StitchPieces, AHoleThatCutsATipOffKeepsTheMainPiece) {
   // A capsule (z in [-3.5, 3.5]) loses a ring of faces near one end: the end is a separate
-  // piece with about 7% of the area.
+  // piece with about 7% of the area, moved aside so that its rim does not face the stump
+  // (facing rims are bridged: test_bridge_pieces.cpp).
   const Mesh capsule = test::capsule();
   Mesh cut = capsule;
   Eigen::Index kept = 0;
@@ -136,8 +137,15 @@ TEST(StitchPieces, AHoleThatCutsATipOffKeepsTheMainPiece) {
     if (z < 2.6 || z > 2.9) cut.F.row(kept++) = capsule.F.row(f);
   }
   cut.F.conservativeResize(kept, 3);
+  std::vector<char> tip(std::size_t(cut.V.rows()), 0);
+  for (Eigen::Index f = 0; f < cut.F.rows(); ++f)
+    if (cut.V(cut.F(f, 0), 2) + cut.V(cut.F(f, 1), 2) + cut.V(cut.F(f, 2), 2) > 3 * 2.9)
+      for (int c = 0; c < 3; ++c) tip[std::size_t(cut.F(f, c))] = 1;
+  for (Eigen::Index v = 0; v < cut.V.rows(); ++v)
+    if (tip[std::size_t(v)]) cut.V(v, 0) += 1.5;
   ASSERT_EQ(cleaned(cut).count, 2);
   const PreparedSurface prepared = prepare_surface(cut, BuildOptions{});
+  EXPECT_EQ(prepared.bridged_pieces, 0u);
   EXPECT_EQ(prepared.set_aside_pieces, 1u);
   EXPECT_EQ(prepared.components, 1u);
   EXPECT_FALSE(prepared.use_proxy);

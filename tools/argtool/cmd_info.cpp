@@ -43,19 +43,14 @@ nlohmann::json describe(const argtool::LoadedArg& loaded) {
   j["bytes"] = loaded.bytes.size();
   if (loaded.built) {
     const arg::BuildReport& r = loaded.report;
-    j["input"] = {{"format", arg::format_name(r.read.format)},
-                  {"vertices_read", r.read.vertices_read},
-                  {"faces_read", r.read.faces_read},
-                  {"colour", r.read.colour_source},
-                  {"welded_vertices", r.welded_vertices},
-                  {"dropped_degenerate", r.dropped_degenerate},
-                  {"dropped_duplicate", r.dropped_duplicate},
-                  {"flipped_faces", r.flipped_faces},
-                  {"boundary_edges", r.boundary_edges},
-                  {"nonmanifold_edges", r.nonmanifold_edges},
-                  {"stitched_pairs", r.stitched_pairs},
-                  {"set_aside_pieces", r.set_aside_pieces},
-                  {"filled_holes", r.filled_loops}};
+    j["input"] = {
+        {"format", arg::format_name(r.read.format)}, {"vertices_read", r.read.vertices_read},
+        {"faces_read", r.read.faces_read},           {"colour", r.read.colour_source},
+        {"welded_vertices", r.welded_vertices},      {"dropped_degenerate", r.dropped_degenerate},
+        {"dropped_duplicate", r.dropped_duplicate},  {"flipped_faces", r.flipped_faces},
+        {"boundary_edges", r.boundary_edges},        {"nonmanifold_edges", r.nonmanifold_edges},
+        {"stitched_pairs", r.stitched_pairs},        {"bridged_pieces", r.bridged_pieces},
+        {"set_aside_pieces", r.set_aside_pieces},    {"filled_holes", r.filled_loops}};
     j["timings_ms"] = {{"read", r.ms.read},           {"clean", r.ms.clean},
                        {"normalise", r.ms.normalise}, {"mu", r.ms.mu},
                        {"reeb", r.ms.reeb},           {"features", r.ms.features},

@@ -1,0 +1,168 @@
+// Bridging pieces that a hole cut apart: a limb cut off by a ring-shaped hole joins its body
+// again by a tube, closed and consistently turned; pieces that do not face each other, pieces
+// too far apart and closed parts are left alone.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "common/errors.hpp"
+#include "mesh/bridge_pieces.hpp"
+#include "mesh/clean_mesh.hpp"
+#include "mesh/connected_components.hpp"
+#include "mesh/mesh_edges.hpp"
+#include "pipeline/prepare_surface.hpp"
+#include "test_exact_meshes.hpp"
+#include "test_shapes.hpp"
+
+namespace arg {
+namespace {
+
+struct Pieces {
+  Mesh mesh;
+  std::vector<int> component;
+  int count = 0;
+};
+
+Pieces cleaned(const Mesh& m, CleanReport* report = nullptr) {
+  Pieces p;
+  p.mesh = clean_mesh(m, report);
+  p.count = vertex_components(p.mesh, p.component);
+  return p;
+}
+
+// The capsule (z in [-3.5, 3.5], radius 0.5) without the faces whose centre lies in [lo, hi]
+// along z; the faces above the cut move by `shift`.
+Mesh capsule_cut(double lo, double hi, const Eigen::RowVector3d& shift = {0, 0, 0}) {
+  const Mesh capsule = test::capsule();
+  Mesh cut = capsule;
+  Eigen::Index kept = 0;
+  for (Eigen::Index f = 0; f < capsule.F.rows(); ++f) {
+    double z = 0;
+    for (int c = 0; c < 3; ++c) z += capsule.V(capsule.F(f, c), 2) / 3;
+    if (z < lo || z > hi) cut.F.row(kept++) = capsule.F.row(f);
+  }
+  cut.F.conservativeResize(kept, 3);
+  std::vector<char> above(std::size_t(cut.V.rows()), 0);
+  for (Eigen::Index f = 0; f < cut.F.rows(); ++f)
+    if (cut.V(cut.F(f, 0), 2) + cut.V(cut.F(f, 1), 2) + cut.V(cut.F(f, 2), 2) > 3 * hi)
+      for (int c = 0; c < 3; ++c) above[std::size_t(cut.F(f, c))] = 1;
+  for (Eigen::Index v = 0; v < cut.V.rows(); ++v)
+    if (above[std::size_t(v)]) cut.V.row(v) += shift;
+  return cut;
+}
+
+double signed_volume(const Mesh& m) {
+  double v = 0;
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    v += m.V.row(m.F(f, 0)).dot(m.V.row(m.F(f, 1)).cross(m.V.row(m.F(f, 2)))) / 6;
+  return v;
+}
+
+TEST(BridgePieces, ALimbCutOffByAHoleIsJoinedByAClosedTube) {
+  const Pieces torn = cleaned(capsule_cut(1.0, 1.6));
+  ASSERT_EQ(torn.count, 2);
+  std::size_t bridges = 0;
+  const Mesh bridged =
+      bridge_pieces(torn.mesh, mesh_edges(torn.mesh.F), torn.component, 1.0, &bridges);
+  EXPECT_EQ(bridges, 1u);
+  CleanReport report;
+  const Pieces joined = cleaned(bridged, &report);
+  EXPECT_EQ(joined.count, 1);
+  EXPECT_EQ(report.boundary_edges, 0u) << "the tube takes up both rims";
+  EXPECT_EQ(report.nonmanifold_edges, 0u);
+  EXPECT_EQ(report.flipped_faces, 0u) << "the tube turns as the pieces do";
+  // The tube stands where the ring was: the volume is the capsule's.
+  const double whole = std::abs(signed_volume(test::capsule()));
+  EXPECT_NEAR(std::abs(signed_volume(joined.mesh)), whole, 0.01 * whole);
+  // Rings every rim edge or so: no sliver spanning the whole gap.
+  const MeshEdges edges = mesh_edges(joined.mesh.F);
+  double longest = 0;
+  for (int e = 0; e < edges.count(); ++e)
+    longest =
+        std::max(longest, (joined.mesh.V.row(edges.v0[e]) - joined.mesh.V.row(edges.v1[e])).norm());
+  EXPECT_LT(longest, 0.3);
+}
+
+TEST(BridgePieces, APieceTurnedInsideOutIsStillJoined) {
+  Pieces torn = cleaned(capsule_cut(1.0, 1.6));
+  for (Eigen::Index f = 0; f < torn.mesh.F.rows(); ++f)
+    if (torn.component[std::size_t(torn.mesh.F(f, 0))] == 1)
+      std::swap(torn.mesh.F(f, 1), torn.mesh.F(f, 2));
+  std::size_t bridges = 0;
+  const Mesh bridged =
+      bridge_pieces(torn.mesh, mesh_edges(torn.mesh.F), torn.component, 1.0, &bridges);
+  EXPECT_EQ(bridges, 1u);
+  CleanReport report;
+  const Pieces joined = cleaned(bridged, &report);
+  EXPECT_EQ(joined.count, 1);
+  EXPECT_EQ(report.boundary_edges, 0u);
+  EXPECT_EQ(report.nonmanifold_edges, 0u);
+}
+
+TEST(BridgePieces, PiecesThatDoNotFaceEachOtherOrLieFarApartStayApart) {
+  std::size_t bridges = 1;
+  // The limb moved sideways: its rim opens past the stump, not towards it.
+  const Pieces aside = cleaned(capsule_cut(1.0, 1.6, {3, 0, 0}));
+  ASSERT_EQ(aside.count, 2);
+  bridge_pieces(aside.mesh, mesh_edges(aside.mesh.F), aside.component, 10.0, &bridges);
+  EXPECT_EQ(bridges, 0u);
+  // Facing, but farther apart than allowed.
+  const Pieces far = cleaned(capsule_cut(1.0, 1.6));
+  const Mesh same = bridge_pieces(far.mesh, mesh_edges(far.mesh.F), far.component, 0.5, &bridges);
+  EXPECT_EQ(bridges, 0u);
+  EXPECT_EQ(same.F.rows(), far.mesh.F.rows());
+  // Two holes in one piece, facing each other across it, are not bridged to each other.
+  const Mesh capsule = test::capsule();
+  Mesh holed = capsule;
+  Eigen::Index kept = 0;
+  for (Eigen::Index f = 0; f < capsule.F.rows(); ++f) {
+    Eigen::RowVector3d c(0, 0, 0);
+    for (int k = 0; k < 3; ++k) c += capsule.V.row(capsule.F(f, k)) / 3;
+    if ((c - Eigen::RowVector3d(0.5, 0, 0)).norm() > 0.2 &&
+        (c - Eigen::RowVector3d(-0.5, 0, 0)).norm() > 0.2)
+      holed.F.row(kept++) = capsule.F.row(f);
+  }
+  holed.F.conservativeResize(kept, 3);
+  const Pieces one = cleaned(holed);
+  ASSERT_EQ(one.count, 1);
+  bridge_pieces(one.mesh, mesh_edges(one.mesh.F), one.component, 10.0, &bridges);
+  EXPECT_EQ(bridges, 0u);
+}
+
+TEST(BridgePieces, ClosedPartsHaveNoRimToBridge) {
+  const Mesh a = test::icosphere(2);
+  Mesh two;
+  two.V.resize(2 * a.V.rows(), 3);
+  two.V << a.V, a.V;
+  two.V.bottomRows(a.V.rows()).col(0).array() += 2.5;
+  two.F.resize(2 * a.F.rows(), 3);
+  two.F << a.F, a.F.array() + int(a.V.rows());
+  const Pieces parts = cleaned(two);
+  ASSERT_EQ(parts.count, 2);
+  std::size_t bridges = 1;
+  bridge_pieces(parts.mesh, mesh_edges(parts.mesh.F), parts.component, 10.0, &bridges);
+  EXPECT_EQ(bridges, 0u);
+}
+
+TEST(BridgePieces, AskedToStopItStops) {
+  const Pieces torn = cleaned(capsule_cut(1.0, 1.6));
+  const StopRequested stop = [] { return true; };
+  EXPECT_THROW(
+      bridge_pieces(torn.mesh, mesh_edges(torn.mesh.F), torn.component, 1.0, nullptr, stop),
+      Interrupted);
+}
+
+TEST(BridgePieces, ALimbCutOffIsMeasuredAsOneSurfaceNotAProxy) {
+  // The limb above the cut holds far more than a tenth of the area: before bridging, this
+  // surface went to the proxy.
+  const PreparedSurface prepared = prepare_surface(capsule_cut(-0.3, 0.3), BuildOptions{});
+  EXPECT_EQ(prepared.bridged_pieces, 1u);
+  EXPECT_EQ(prepared.components, 1u);
+  EXPECT_EQ(prepared.set_aside_pieces, 0u);
+  EXPECT_FALSE(prepared.use_proxy);
+  EXPECT_EQ(prepared.filled_loops, 0u) << "the tube took both rims: nothing left to fill";
+}
+
+}  // namespace
+}  // namespace arg
