@@ -4,24 +4,10 @@
 #include "mesh/boundary_loops.hpp"
 #include "mesh/mesh_edges.hpp"
 #include "test_exact_meshes.hpp"
-#include "test_shapes.hpp"
+#include "test_torn_meshes.hpp"
 
 namespace arg {
 namespace {
-
-// The capsule without the faces whose centre lies in [lo, hi] along z.
-Mesh capsule_without(double lo, double hi) {
-  const Mesh capsule = test::capsule();
-  Mesh cut = capsule;
-  Eigen::Index kept = 0;
-  for (Eigen::Index f = 0; f < capsule.F.rows(); ++f) {
-    double z = 0;
-    for (int c = 0; c < 3; ++c) z += capsule.V(capsule.F(f, c), 2) / 3;
-    if (z < lo || z > hi) cut.F.row(kept++) = capsule.F.row(f);
-  }
-  cut.F.conservativeResize(kept, 3);
-  return cut;
-}
 
 TEST(BoundaryLoops, AClosedMeshHasNone) {
   const Mesh sphere = test::icosphere(2);
@@ -31,7 +17,7 @@ TEST(BoundaryLoops, AClosedMeshHasNone) {
 }
 
 TEST(BoundaryLoops, ARingCutOutLeavesTwoLoopsWalkedAsTheirFacesRun) {
-  const Mesh cut = capsule_without(0.5, 1.0);
+  const Mesh cut = test::capsule_cut(0.5, 1.0);
   const MeshEdges edges = mesh_edges(cut.F);
   const BoundaryLoops found = boundary_loops(cut, edges);
   ASSERT_EQ(found.loops.size(), 2u);

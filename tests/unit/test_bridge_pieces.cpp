@@ -8,66 +8,32 @@
 
 #include "common/errors.hpp"
 #include "mesh/bridge_pieces.hpp"
-#include "mesh/clean_mesh.hpp"
-#include "mesh/connected_components.hpp"
 #include "mesh/mesh_edges.hpp"
 #include "pipeline/prepare_surface.hpp"
 #include "test_exact_meshes.hpp"
-#include "test_shapes.hpp"
+#include "test_torn_meshes.hpp"
 
 namespace arg {
 namespace {
 
-struct Pieces {
-  Mesh mesh;
-  std::vector<int> component;
-  int count = 0;
-};
+using test::capsule_cut;
+using test::cleaned;
+using test::Pieces;
+using test::signed_volume;
 
-Pieces cleaned(const Mesh& m, CleanReport* report = nullptr) {
-  Pieces p;
-  p.mesh = clean_mesh(m, report);
-  p.count = vertex_components(p.mesh, p.component);
-  return p;
-}
-
-// The capsule (z in [-3.5, 3.5], radius 0.5) without the faces whose centre lies in [lo, hi]
-// along z; the faces above the cut move by `shift`.
-Mesh capsule_cut(double lo, double hi, const Eigen::RowVector3d& shift = {0, 0, 0}) {
-  const Mesh capsule = test::capsule();
-  Mesh cut = capsule;
-  Eigen::Index kept = 0;
-  for (Eigen::Index f = 0; f < capsule.F.rows(); ++f) {
-    double z = 0;
-    for (int c = 0; c < 3; ++c) z += capsule.V(capsule.F(f, c), 2) / 3;
-    if (z < lo || z > hi) cut.F.row(kept++) = capsule.F.row(f);
-  }
-  cut.F.conservativeResize(kept, 3);
-  std::vector<char> above(std::size_t(cut.V.rows()), 0);
-  for (Eigen::Index f = 0; f < cut.F.rows(); ++f)
-    if (cut.V(cut.F(f, 0), 2) + cut.V(cut.F(f, 1), 2) + cut.V(cut.F(f, 2), 2) > 3 * hi)
-      for (int c = 0; c < 3; ++c) above[std::size_t(cut.F(f, c))] = 1;
-  for (Eigen::Index v = 0; v < cut.V.rows(); ++v)
-    if (above[std::size_t(v)]) cut.V.row(v) += shift;
-  return cut;
-}
-
-double signed_volume(const Mesh& m) {
-  double v = 0;
-  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
-    v += m.V.row(m.F(f, 0)).dot(m.V.row(m.F(f, 1)).cross(m.V.row(m.F(f, 2)))) / 6;
-  return v;
+// The pieces bridged (gaps up to 1), then cleaned: the surface prepare_surface would go on with.
+Pieces bridged(const Pieces& torn, std::size_t& bridges, CleanReport& report) {
+  return cleaned(bridge_pieces(torn.mesh, mesh_edges(torn.mesh.F), torn.component, 1.0, &bridges),
+                 &report);
 }
 
 TEST(BridgePieces, ALimbCutOffByAHoleIsJoinedByAClosedTube) {
   const Pieces torn = cleaned(capsule_cut(1.0, 1.6));
   ASSERT_EQ(torn.count, 2);
   std::size_t bridges = 0;
-  const Mesh bridged =
-      bridge_pieces(torn.mesh, mesh_edges(torn.mesh.F), torn.component, 1.0, &bridges);
-  EXPECT_EQ(bridges, 1u);
   CleanReport report;
-  const Pieces joined = cleaned(bridged, &report);
+  const Pieces joined = bridged(torn, bridges, report);
+  EXPECT_EQ(bridges, 1u);
   EXPECT_EQ(joined.count, 1);
   EXPECT_EQ(report.boundary_edges, 0u) << "the tube takes up both rims";
   EXPECT_EQ(report.nonmanifold_edges, 0u);
@@ -90,11 +56,9 @@ TEST(BridgePieces, APieceTurnedInsideOutIsStillJoined) {
     if (torn.component[std::size_t(torn.mesh.F(f, 0))] == 1)
       std::swap(torn.mesh.F(f, 1), torn.mesh.F(f, 2));
   std::size_t bridges = 0;
-  const Mesh bridged =
-      bridge_pieces(torn.mesh, mesh_edges(torn.mesh.F), torn.component, 1.0, &bridges);
-  EXPECT_EQ(bridges, 1u);
   CleanReport report;
-  const Pieces joined = cleaned(bridged, &report);
+  const Pieces joined = bridged(torn, bridges, report);
+  EXPECT_EQ(bridges, 1u);
   EXPECT_EQ(joined.count, 1);
   EXPECT_EQ(report.boundary_edges, 0u);
   EXPECT_EQ(report.nonmanifold_edges, 0u);

@@ -11,9 +11,12 @@
 #include "pipeline/build_arg.hpp"
 #include "test_exact_meshes.hpp"
 #include "test_shapes.hpp"
+#include "test_torn_meshes.hpp"
 
 namespace arg {
 namespace {
+
+using test::signed_volume;
 
 // Every edge used exactly once in each direction: closed and consistently oriented.
 bool closed_and_oriented(const Mesh& m) {
@@ -25,13 +28,6 @@ bool closed_and_oriented(const Mesh& m) {
         used.at({edge.second, edge.first}) != 1)
       return false;
   return true;
-}
-
-double signed_volume(const Mesh& m) {
-  double v = 0;
-  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
-    v += m.V.row(m.F(f, 0)).dot(m.V.row(m.F(f, 1)).cross(m.V.row(m.F(f, 2)))) / 6.0;
-  return v;
 }
 
 Mesh without_faces(const Mesh& m, const std::vector<Eigen::Index>& drop) {

@@ -13,22 +13,13 @@
 #include "pipeline/prepare_surface.hpp"
 #include "test_exact_meshes.hpp"
 #include "test_shapes.hpp"
+#include "test_torn_meshes.hpp"
 
 namespace arg {
 namespace {
 
-struct Pieces {
-  Mesh mesh;
-  std::vector<int> component;
-  int count = 0;
-};
-
-Pieces cleaned(const Mesh& m, CleanReport* report = nullptr) {
-  Pieces p;
-  p.mesh = clean_mesh(m, report);
-  p.count = vertex_components(p.mesh, p.component);
-  return p;
-}
+using test::cleaned;
+using test::Pieces;
 
 // The faces whose centre lies above z = cut go up by `gap`, as copies of their own vertices.
 Mesh cut_apart(const Mesh& m, double cut, double gap) {
@@ -128,21 +119,7 @@ TEST(StitchPieces, AHoleThatCutsATipOffKeepsTheMainPiece) {
   // A capsule (z in [-3.5, 3.5]) loses a ring of faces near one end: the end is a separate
   // piece with about 7% of the area, moved aside so that its rim does not face the stump
   // (facing rims are bridged: test_bridge_pieces.cpp).
-  const Mesh capsule = test::capsule();
-  Mesh cut = capsule;
-  Eigen::Index kept = 0;
-  for (Eigen::Index f = 0; f < capsule.F.rows(); ++f) {
-    double z = 0;
-    for (int c = 0; c < 3; ++c) z += capsule.V(capsule.F(f, c), 2) / 3;
-    if (z < 2.6 || z > 2.9) cut.F.row(kept++) = capsule.F.row(f);
-  }
-  cut.F.conservativeResize(kept, 3);
-  std::vector<char> tip(std::size_t(cut.V.rows()), 0);
-  for (Eigen::Index f = 0; f < cut.F.rows(); ++f)
-    if (cut.V(cut.F(f, 0), 2) + cut.V(cut.F(f, 1), 2) + cut.V(cut.F(f, 2), 2) > 3 * 2.9)
-      for (int c = 0; c < 3; ++c) tip[std::size_t(cut.F(f, c))] = 1;
-  for (Eigen::Index v = 0; v < cut.V.rows(); ++v)
-    if (tip[std::size_t(v)]) cut.V(v, 0) += 1.5;
+  const Mesh cut = test::capsule_cut(2.6, 2.9, {1.5, 0, 0});
   ASSERT_EQ(cleaned(cut).count, 2);
   const PreparedSurface prepared = prepare_surface(cut, BuildOptions{});
   EXPECT_EQ(prepared.bridged_pieces, 0u);
