@@ -60,22 +60,33 @@ Ring make_ring(std::vector<Point> points) {
 }
 
 // Signed volume of each piece with its loops closed by fans: its sign says whether the piece's
-// faces turn out (an open piece keeps whatever way clean_mesh left it).
+// faces turn out (an open piece keeps whatever way clean_mesh left it). Measured about each
+// piece's mean vertex, so that a model far from the origin keeps its sign.
 std::vector<double> closed_volumes(const Mesh& mesh, const std::vector<int>& component,
                                    const std::vector<BoundaryLoop>& loops, int pieces) {
+  std::vector<Point> origin(std::size_t(pieces), Point::Zero());
+  std::vector<double> count(std::size_t(pieces), 0.0);
+  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) {
+    origin[std::size_t(component[std::size_t(v)])] += mesh.V.row(v);
+    count[std::size_t(component[std::size_t(v)])] += 1;
+  }
+  for (std::size_t p = 0; p < origin.size(); ++p)
+    if (count[p] > 0) origin[p] /= count[p];
   std::vector<double> volume(std::size_t(pieces), 0.0);
+  auto add = [&](int a, int b, const Point& c) {  // the triangle (a, b, c) of a's piece
+    const std::size_t p = std::size_t(component[std::size_t(a)]);
+    volume[p] += (Point(mesh.V.row(a)) - origin[p])
+                     .dot((Point(mesh.V.row(b)) - origin[p]).cross(c - origin[p]));
+  };
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
-    volume[std::size_t(component[std::size_t(mesh.F(f, 0))])] +=
-        mesh.V.row(mesh.F(f, 0)).dot(mesh.V.row(mesh.F(f, 1)).cross(mesh.V.row(mesh.F(f, 2))));
+    add(mesh.F(f, 0), mesh.F(f, 1), mesh.V.row(mesh.F(f, 2)));
   for (const BoundaryLoop& loop : loops) {
     const std::size_t n = loop.vertices.size();
     Point c = Point::Zero();
     for (int v : loop.vertices) c += mesh.V.row(v);
     c /= double(n);
     for (std::size_t i = 0; i < n; ++i)  // the fan face (to, from, centre)
-      volume[std::size_t(component[std::size_t(loop.vertices[i])])] +=
-          Point(mesh.V.row(loop.vertices[(i + 1) % n]))
-              .dot(Point(mesh.V.row(loop.vertices[i])).cross(c));
+      add(loop.vertices[(i + 1) % n], loop.vertices[i], c);
   }
   return volume;
 }
@@ -117,9 +128,32 @@ Mesh bridge_pieces(const Mesh& mesh, const MeshEdges& edges, const std::vector<i
                    double max_gap, std::size_t* bridges, const StopRequested& stop) {
   if (bridges) *bridges = 0;
   const std::vector<BoundaryLoop> loops = boundary_loops(mesh, edges).loops;
-  if (loops.size() < 2 || loops.size() > kMaxLoops || !(max_gap > 0)) return mesh;
+  if (loops.size() < 2 || loops.size() > kMaxLoops || !(max_gap > 0) ||
+      component.size() != std::size_t(mesh.V.rows()) ||
+      *std::min_element(component.begin(), component.end()) < 0)
+    return mesh;
   const int pieces = 1 + *std::max_element(component.begin(), component.end());
   const std::vector<double> volume = closed_volumes(mesh, component, loops, pieces);
+  // Which way a piece is turned is known only from a closed fan surface that encloses some
+  // volume: not for a piece with rim edges outside the simple loops (a rim that passes a vertex
+  // twice), nor for a flat one (a lone triangle, a sheet), whose volume is rounding noise.
+  // Their loops are not bridged.
+  std::vector<long long> loose_rim(std::size_t(pieces), 0);
+  std::vector<double> area(std::size_t(pieces), 0.0);
+  for (int e = 0; e < edges.count(); ++e)
+    if (edges.faces(e) == 1) ++loose_rim[std::size_t(component[std::size_t(edges.v0[e])])];
+  for (const BoundaryLoop& loop : loops)
+    loose_rim[std::size_t(component[std::size_t(loop.vertices[0])])] -=
+        (long long)loop.vertices.size();
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
+    area[std::size_t(component[std::size_t(mesh.F(f, 0))])] +=
+        0.5 * (mesh.V.row(mesh.F(f, 1)) - mesh.V.row(mesh.F(f, 0)))
+                  .cross(mesh.V.row(mesh.F(f, 2)) - mesh.V.row(mesh.F(f, 0)))
+                  .norm();
+  std::vector<char> turning_known(std::size_t(pieces), 0);
+  for (std::size_t p = 0; p < turning_known.size(); ++p)
+    turning_known[p] =
+        loose_rim[p] == 0 && std::abs(volume[p]) > 1e-6 * area[p] * std::sqrt(area[p]);
 
   std::vector<LoopShape> shape(loops.size());
   for (std::size_t l = 0; l < loops.size(); ++l) {
@@ -149,12 +183,15 @@ Mesh bridge_pieces(const Mesh& mesh, const MeshEdges& edges, const std::vector<i
   for (std::size_t a = 0; a < loops.size(); ++a)
     for (std::size_t b = a + 1; b < loops.size(); ++b) {
       const LoopShape &p = shape[a], &q = shape[b];
-      if (p.piece == q.piece) continue;
+      if (p.piece == q.piece || !turning_known[std::size_t(p.piece)] ||
+          !turning_known[std::size_t(q.piece)])
+        continue;
       const Point d = q.centre - p.centre;
       const double gap = d.norm();
       const double small = std::min(p.radius, q.radius), large = std::max(p.radius, q.radius);
-      if (!(gap > 0) || gap > max_gap || !(small > 0) || large > kRadiusRatio * small) continue;
-      if (p.opening.dot(d) < kFacing * gap || -q.opening.dot(d) < kFacing * gap) continue;
+      // Written so that a NaN fails each test.
+      if (!(gap > 0 && gap <= max_gap && small > 0 && large <= kRadiusRatio * small)) continue;
+      if (!(p.opening.dot(d) >= kFacing * gap && -q.opening.dot(d) >= kFacing * gap)) continue;
       pairs.emplace_back(gap * (1 + std::log(large / small)), a, b);
     }
   std::sort(pairs.begin(), pairs.end());
@@ -176,8 +213,9 @@ Mesh bridge_pieces(const Mesh& mesh, const MeshEdges& edges, const std::vector<i
     used[a] = used[b] = 1;
     if (bridges) ++*bridges;
 
-    // The faces along the tube run against both rims: loop a is walked backwards, and loop b
-    // forwards, or backwards too when its piece is turned the other way round.
+    // The faces along the tube run against both rims: loop a is walked backwards and loop b
+    // forwards. When b's piece is turned the other way round, b is walked backwards too: the
+    // tube then agrees with a's piece only, and clean_mesh turns b's piece over to match.
     const std::vector<int>& va = loops[a].vertices;
     std::vector<int> xa(va.size());
     for (std::size_t i = 0; i < va.size(); ++i) xa[i] = va[(va.size() - i) % va.size()];
@@ -195,6 +233,7 @@ Mesh bridge_pieces(const Mesh& mesh, const MeshEdges& edges, const std::vector<i
     std::size_t best_start = 0;
     double best = std::numeric_limits<double>::infinity();
     for (std::size_t o = 0; o < yb.size(); ++o) {
+      if ((o & 1023) == 1023) check_interrupt(stop);
       double cost = 0;
       for (int t = 0; t < kAlignSamples; ++t) {
         const double s = double(t) / kAlignSamples;
@@ -215,8 +254,13 @@ Mesh bridge_pieces(const Mesh& mesh, const MeshEdges& edges, const std::vector<i
     }
     const double gap = (shape[b].centre - shape[a].centre).norm();
     const double step = 0.5 * (shape[a].edge + shape[b].edge);
-    const int rings = std::clamp(int(std::lround(gap / std::max(step, 1e-12))) - 1, 0, kMaxRings);
     const std::size_t count = std::max(xa.size(), yb.size());
+    // No more rings than kMaxRings, and all tubes together add at most as many vertices as the
+    // mesh has (a rim of millions of vertices would otherwise multiply them).
+    const double budget =
+        std::floor(double(mesh.V.rows() - Eigen::Index(tubes.vertices.size())) / double(count));
+    const int rings = int(std::clamp(std::round(gap / std::max(step, 1e-12)) - 1.0, 0.0,
+                                     std::min(double(kMaxRings), std::max(budget, 0.0))));
     std::vector<int> prev = xa, ring(count);
     std::vector<double> prev_at = ring_a.at, even(count);
     for (std::size_t t = 0; t < count; ++t) even[t] = double(t) / double(count);

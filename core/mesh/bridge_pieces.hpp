@@ -17,11 +17,15 @@ namespace arg {
 // different pieces (`component`: vertex_components' numbering) whose centres lie within
 // `max_gap` of each other, of mean radii within a factor of four (a body's rim is wider than
 // the limb's), each opening towards the other (its fan's normal, turned out of its piece, within
-// 45 degrees of the line to the other's centre). Pairs are taken nearest first, a pair of
-// unequal sizes counting as farther (gap times 1 + log of the radius ratio), each loop once and
-// only while it joins pieces not yet joined; each becomes a tube: rings lerped between the two
-// loops, about one a rim edge length apart, zipped to the loops by arc length after turning one
-// loop to the start that fits the other best, its faces turned as the pieces' are. Returns the
+// about 45 degrees of the line to the other's centre: cosine 0.7). Only pieces whose whole rim is
+// simple loops and whose fan-closed surface encloses some volume take part (which way a flat
+// piece, or one with a pinched rim, is turned is unknown). Pairs are taken nearest first, a
+// pair of unequal sizes counting as farther (gap times 1 + log of the radius ratio), each loop once
+// and only while it joins pieces not yet joined; each becomes a tube: rings lerped between the two
+// loops, about one a rim edge length apart (at most 16, and all tubes together at most as many
+// vertices as the mesh), zipped to the loops by arc length after turning one
+// loop to the start that fits the other best, its faces turned as the first loop's piece (a
+// piece turned the other way is turned over when the result is cleaned). Returns the
 // mesh with the tubes added (their faces take the mean colour of the two rims' faces);
 // `bridges` (optional) receives the number of tubes. A mesh with more than 256 loops (a soup of
 // open panels, not a cut surface) is returned as it is. Deterministic; polls `stop`.

@@ -52,10 +52,10 @@ constexpr double kTearGap = 0.01;
 // bits a hole cut off (a fingertip, the end of a tail), which mu would otherwise reach only
 // through the proxy that rounds the shape's thin parts away.
 constexpr double kMainPiece = 0.9;
-// Rims of pieces farther apart than a tear but facing each other within this share of the
-// diagonal are joined by a tube (bridge_pieces.hpp): a hole wider than a limb (perturb's
-// large holes are balls of 6% of the diagonal) leaves the limb's stump and the limb that far
-// apart.
+// Rims of pieces that face each other with their centres within this share of the diagonal
+// are joined by a tube (bridge_pieces.hpp): a hole wider than a limb leaves the limb's stump and
+// the limb up to its diameter apart (perturb's large holes are balls of radius 6% of the
+// diagonal: gaps up to 12%).
 constexpr double kBridgeGap = 0.15;
 
 // The faces of component 0 (clean_mesh then drops the vertices no kept face uses).
@@ -111,10 +111,18 @@ void join_torn_pieces(Mesh& mesh, std::vector<int>& component, PreparedSurface& 
   if (pieces > 1) {
     const Mesh bridged =
         bridge_pieces(joined, mesh_edges(joined.F), piece, kBridgeGap * diagonal, &tubes, stop);
+    // A tube whose cleaning leaves non-manifold edges (welded onto a rim it crosses) is not
+    // kept; what stitching joined still is.
+    CleanReport with_tubes = report;
     if (tubes > 0) {
-      joined = clean_again(bridged, report, stop);
-      if (report.nonmanifold_edges > 0) return;
-      pieces = std::size_t(vertex_components(joined, piece));
+      Mesh candidate = clean_again(bridged, with_tubes, stop);
+      if (with_tubes.nonmanifold_edges == 0) {
+        joined = std::move(candidate);
+        report = with_tubes;
+        pieces = std::size_t(vertex_components(joined, piece));
+      } else {
+        tubes = 0;
+      }
     }
   }
   std::vector<double> area = component_areas(joined, piece, pieces);

@@ -1,8 +1,9 @@
 // Bridging pieces that a hole cut apart: a limb cut off by a ring-shaped hole joins its body
 // again by a tube, closed and consistently turned; pieces that do not face each other, pieces
-// too far apart and closed parts are left alone.
+// too far apart, loops of one piece and closed parts are left alone.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -20,6 +21,14 @@ using test::capsule_cut;
 using test::cleaned;
 using test::Pieces;
 using test::signed_volume;
+
+double longest_edge(const Mesh& m) {
+  const MeshEdges edges = mesh_edges(m.F);
+  double longest = 0;
+  for (int e = 0; e < edges.count(); ++e)
+    longest = std::max(longest, (m.V.row(edges.v0[e]) - m.V.row(edges.v1[e])).norm());
+  return longest;
+}
 
 // The pieces bridged (gaps up to 1), then cleaned: the surface prepare_surface would go on with.
 Pieces bridged(const Pieces& torn, std::size_t& bridges, CleanReport& report) {
@@ -42,12 +51,7 @@ TEST(BridgePieces, ALimbCutOffByAHoleIsJoinedByAClosedTube) {
   const double whole = std::abs(signed_volume(test::capsule()));
   EXPECT_NEAR(std::abs(signed_volume(joined.mesh)), whole, 0.01 * whole);
   // Rings every rim edge or so: no sliver spanning the whole gap.
-  const MeshEdges edges = mesh_edges(joined.mesh.F);
-  double longest = 0;
-  for (int e = 0; e < edges.count(); ++e)
-    longest =
-        std::max(longest, (joined.mesh.V.row(edges.v0[e]) - joined.mesh.V.row(edges.v1[e])).norm());
-  EXPECT_LT(longest, 0.3);
+  EXPECT_LT(longest_edge(joined.mesh), 0.3);
 }
 
 TEST(BridgePieces, APieceTurnedInsideOutIsStillJoined) {
@@ -62,6 +66,10 @@ TEST(BridgePieces, APieceTurnedInsideOutIsStillJoined) {
   EXPECT_EQ(joined.count, 1);
   EXPECT_EQ(report.boundary_edges, 0u);
   EXPECT_EQ(report.nonmanifold_edges, 0u);
+  // Not twisted: walked the other way, the turned piece's loop still meets the other in order.
+  const double whole = std::abs(signed_volume(test::capsule()));
+  EXPECT_NEAR(std::abs(signed_volume(joined.mesh)), whole, 0.01 * whole);
+  EXPECT_LT(longest_edge(joined.mesh), 0.3);
 }
 
 TEST(BridgePieces, PiecesThatDoNotFaceEachOtherOrLieFarApartStayApart) {
@@ -76,22 +84,45 @@ TEST(BridgePieces, PiecesThatDoNotFaceEachOtherOrLieFarApartStayApart) {
   const Mesh same = bridge_pieces(far.mesh, mesh_edges(far.mesh.F), far.component, 0.5, &bridges);
   EXPECT_EQ(bridges, 0u);
   EXPECT_EQ(same.F.rows(), far.mesh.F.rows());
-  // Two holes in one piece, facing each other across it, are not bridged to each other.
-  const Mesh capsule = test::capsule();
-  Mesh holed = capsule;
-  Eigen::Index kept = 0;
-  for (Eigen::Index f = 0; f < capsule.F.rows(); ++f) {
-    Eigen::RowVector3d c(0, 0, 0);
-    for (int k = 0; k < 3; ++k) c += capsule.V.row(capsule.F(f, k)) / 3;
-    if ((c - Eigen::RowVector3d(0.5, 0, 0)).norm() > 0.2 &&
-        (c - Eigen::RowVector3d(-0.5, 0, 0)).norm() > 0.2)
-      holed.F.row(kept++) = capsule.F.row(f);
-  }
-  holed.F.conservativeResize(kept, 3);
-  const Pieces one = cleaned(holed);
-  ASSERT_EQ(one.count, 1);
-  bridge_pieces(one.mesh, mesh_edges(one.mesh.F), one.component, 10.0, &bridges);
+  // Loops of one piece are never bridged to each other: the torn capsule, told it is one piece.
+  const Pieces torn = cleaned(capsule_cut(1.0, 1.6));
+  const std::vector<int> one_piece(torn.component.size(), 0);
+  bridge_pieces(torn.mesh, mesh_edges(torn.mesh.F), one_piece, 10.0, &bridges);
   EXPECT_EQ(bridges, 0u);
+}
+
+TEST(BridgePieces, AFlatPieceIsNotBridgedThoughItFacesARim) {
+  // A lone triangle across the gap, nearer to both rims than they are to each other: which way
+  // it is turned is unknown, so the stump and the limb are joined past it.
+  const Mesh cut = capsule_cut(1.0, 1.6);
+  Mesh with_triangle = cut;
+  const Eigen::Index first = cut.V.rows();
+  with_triangle.V.conservativeResize(first + 3, 3);
+  for (int k = 0; k < 3; ++k)
+    with_triangle.V.row(first + k) << 0.4 * std::cos(2 * M_PI * k / 3),
+        0.4 * std::sin(2 * M_PI * k / 3), 1.3;
+  with_triangle.F.conservativeResize(cut.F.rows() + 1, 3);
+  with_triangle.F.row(cut.F.rows()) << int(first), int(first) + 1, int(first) + 2;
+  const Pieces torn = cleaned(with_triangle);
+  ASSERT_EQ(torn.count, 3);
+  std::size_t bridges = 0;
+  CleanReport report;
+  const Pieces joined = bridged(torn, bridges, report);
+  EXPECT_EQ(bridges, 1u);
+  ASSERT_EQ(joined.count, 2);
+  const std::ptrdiff_t in_first = std::count(joined.component.begin(), joined.component.end(), 0);
+  EXPECT_EQ(std::min<std::ptrdiff_t>(in_first, joined.mesh.V.rows() - in_first), 3)
+      << "the triangle stays a piece of its own";
+  // The capsule's piece, without the open triangle (whose faces enclose nothing), is whole.
+  Mesh capsule_piece = joined.mesh;
+  Eigen::Index kept = 0;
+  const int big = in_first > 3 ? 0 : 1;
+  for (Eigen::Index f = 0; f < joined.mesh.F.rows(); ++f)
+    if (joined.component[std::size_t(joined.mesh.F(f, 0))] == big)
+      capsule_piece.F.row(kept++) = joined.mesh.F.row(f);
+  capsule_piece.F.conservativeResize(kept, 3);
+  const double whole = std::abs(signed_volume(test::capsule()));
+  EXPECT_NEAR(std::abs(signed_volume(capsule_piece)), whole, 0.01 * whole);
 }
 
 TEST(BridgePieces, ClosedPartsHaveNoRimToBridge) {
