@@ -7,7 +7,9 @@
 #include <numeric>
 #include <tuple>
 
+#include "mesh/append_faces.hpp"
 #include "mesh/boundary_loops.hpp"
+#include "mesh/connected_components.hpp"
 
 namespace arg {
 
@@ -139,17 +141,12 @@ Mesh bridge_pieces(const Mesh& mesh, const MeshEdges& edges, const std::vector<i
   // twice), nor for a flat one (a lone triangle, a sheet), whose volume is rounding noise.
   // Their loops are not bridged.
   std::vector<long long> loose_rim(std::size_t(pieces), 0);
-  std::vector<double> area(std::size_t(pieces), 0.0);
   for (int e = 0; e < edges.count(); ++e)
     if (edges.faces(e) == 1) ++loose_rim[std::size_t(component[std::size_t(edges.v0[e])])];
   for (const BoundaryLoop& loop : loops)
     loose_rim[std::size_t(component[std::size_t(loop.vertices[0])])] -=
         (long long)loop.vertices.size();
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
-    area[std::size_t(component[std::size_t(mesh.F(f, 0))])] +=
-        0.5 * (mesh.V.row(mesh.F(f, 1)) - mesh.V.row(mesh.F(f, 0)))
-                  .cross(mesh.V.row(mesh.F(f, 2)) - mesh.V.row(mesh.F(f, 0)))
-                  .norm();
+  const std::vector<double> area = component_areas(mesh, component, std::size_t(pieces));
   std::vector<char> turning_known(std::size_t(pieces), 0);
   for (std::size_t p = 0; p < turning_known.size(); ++p)
     turning_known[p] =
@@ -279,22 +276,7 @@ Mesh bridge_pieces(const Mesh& mesh, const MeshEdges& edges, const std::vector<i
   }
   if (tubes.faces.empty()) return mesh;
 
-  Mesh out;
-  out.V.resize(mesh.V.rows() + Eigen::Index(tubes.vertices.size()), 3);
-  out.V.topRows(mesh.V.rows()) = mesh.V;
-  for (std::size_t k = 0; k < tubes.vertices.size(); ++k)
-    out.V.row(mesh.V.rows() + Eigen::Index(k)) = tubes.vertices[k];
-  out.F.resize(mesh.F.rows() + Eigen::Index(tubes.faces.size()), 3);
-  out.F.topRows(mesh.F.rows()) = mesh.F;
-  for (std::size_t k = 0; k < tubes.faces.size(); ++k)
-    out.F.row(mesh.F.rows() + Eigen::Index(k)) = tubes.faces[k];
-  if (mesh.has_colour()) {
-    out.C.resize(out.F.rows(), 3);
-    out.C.topRows(mesh.C.rows()) = mesh.C;
-    for (std::size_t k = 0; k < tubes.colours.size(); ++k)
-      out.C.row(mesh.F.rows() + Eigen::Index(k)) = tubes.colours[k];
-  }
-  return out;
+  return append_faces(mesh, tubes.vertices, tubes.faces, tubes.colours);
 }
 
 }  // namespace arg

@@ -99,4 +99,15 @@ std::vector<std::pair<int, int>> component_links(const Mesh& mesh,
   return links;
 }
 
+std::vector<double> component_areas(const Mesh& mesh, const std::vector<int>& component,
+                                    std::size_t count) {
+  std::vector<double> area(count, 0.0);
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
+    area[std::size_t(component[std::size_t(mesh.F(f, 0))])] +=
+        0.5 * (mesh.V.row(mesh.F(f, 1)) - mesh.V.row(mesh.F(f, 0)))
+                  .cross(mesh.V.row(mesh.F(f, 2)) - mesh.V.row(mesh.F(f, 0)))
+                  .norm();
+  return area;
+}
+
 }  // namespace arg

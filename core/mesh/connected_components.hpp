@@ -12,6 +12,11 @@ namespace arg {
 // faces sharing a vertex are connected. Returns the number of components.
 int vertex_components(const Mesh& mesh, std::vector<int>& component);
 
+// Area of each of `count` components (`component`: vertex_components' numbering, a face counted
+// in its first corner's component).
+std::vector<double> component_areas(const Mesh& mesh, const std::vector<int>& component,
+                                    std::size_t count);
+
 // For every component but the largest, the nearest (vertex of it, vertex of another component
 // already linked) pair, so that the linked graph is connected. Deterministic.
 std::vector<std::pair<int, int>> component_links(const Mesh& mesh,

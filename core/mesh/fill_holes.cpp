@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "mesh/append_faces.hpp"
 #include "mesh/boundary_loops.hpp"
 #include "mesh/mesh_edges.hpp"
 
@@ -42,23 +43,8 @@ Mesh fill_holes(const Mesh& mesh, FillReport* report) {
   }
   if (new_faces.empty()) return mesh;
 
-  Mesh out;
-  out.V.resize(mesh.V.rows() + Eigen::Index(new_vertices.size()), 3);
-  out.V.topRows(mesh.V.rows()) = mesh.V;
-  for (std::size_t k = 0; k < new_vertices.size(); ++k)
-    out.V.row(mesh.V.rows() + Eigen::Index(k)) = new_vertices[k];
-  out.F.resize(mesh.F.rows() + Eigen::Index(new_faces.size()), 3);
-  out.F.topRows(mesh.F.rows()) = mesh.F;
-  for (std::size_t k = 0; k < new_faces.size(); ++k)
-    out.F.row(mesh.F.rows() + Eigen::Index(k)) = new_faces[k];
-  if (mesh.has_colour()) {
-    out.C.resize(out.F.rows(), 3);
-    out.C.topRows(mesh.C.rows()) = mesh.C;
-    for (std::size_t k = 0; k < new_colours.size(); ++k)
-      out.C.row(mesh.F.rows() + Eigen::Index(k)) = new_colours[k];
-  }
   rep.added_faces = new_faces.size();
-  return out;
+  return append_faces(mesh, new_vertices, new_faces, new_colours);
 }
 
 }  // namespace arg

@@ -17,18 +17,6 @@ namespace arg {
 
 namespace {
 
-// Area of each component (vertex_components' numbering: by decreasing area).
-std::vector<double> component_areas(const Mesh& mesh, const std::vector<int>& component,
-                                    std::size_t count) {
-  std::vector<double> area(count, 0.0);
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
-    area[std::size_t(component[std::size_t(mesh.F(f, 0))])] +=
-        0.5 * (mesh.V.row(mesh.F(f, 1)) - mesh.V.row(mesh.F(f, 0)))
-                  .cross(mesh.V.row(mesh.F(f, 2)) - mesh.V.row(mesh.F(f, 0)))
-                  .norm();
-  return area;
-}
-
 // Cleans a mesh made from a cleaned one; the counts of what was merged and dropped add up, and
 // boundary_edges stays the input's (the open flag says the input was open, as when holes are
 // filled); the rest (non-manifold edges, flips) describe the new mesh.
