@@ -46,7 +46,8 @@ set(ARG_RENDER_SOURCES
     render/render_model.cpp render/view_camera.cpp)
 set(ARG_EVAL_SOURCES
     eval/baseline_descriptors.cpp eval/distance_matrix_file.cpp eval/label_file.cpp
-    eval/perturbations.cpp eval/pr_plot.cpp eval/retrieval_metrics.cpp eval/weight_search.cpp)
+    eval/perturbations.cpp eval/pr_plot.cpp eval/quadric_decimation.cpp
+    eval/retrieval_metrics.cpp eval/weight_search.cpp)
 # The plug-ins' sources, listed with their targets in CMakeLists.txt.
 set(ARG_PLUGIN_SOURCES oiio/oiio_decode_image.cpp oiio/write_png.cpp oiio/register_decoder.cpp
                        vdb/vdb_distance_field.cpp vdb/register_distance_field.cpp)
@@ -77,4 +78,5 @@ target_link_libraries(arggen PUBLIC argmethod)
 arg_core_library(argrender ${ARG_RENDER_SOURCES})
 target_link_libraries(argrender PUBLIC argmethod)
 arg_core_library(argeval ${ARG_EVAL_SOURCES})
-target_link_libraries(argeval PUBLIC arggen argmethod)
+# OpenMesh's tools: the quadric decimater of the robustness benchmark (eval/quadric_decimation.cpp).
+target_link_libraries(argeval PUBLIC arggen argmethod OpenMeshTools)

@@ -9,6 +9,7 @@
 
 #include "common/errors.hpp"
 #include "common/random.hpp"
+#include "eval/quadric_decimation.hpp"
 #include "gen/seeded_random.hpp"
 #include "mesh/collapse_short_edges.hpp"
 
@@ -63,6 +64,38 @@ Eigen::RowVector3d surface_point(const Mesh& m, const std::vector<double>& area,
   return centroid(m, m.F.rows() - 1);
 }
 
+// A point drawn uniformly on the surface: a face with probability proportional to its area,
+// then a point uniformly inside it. A hole centred there is as likely on any patch of the
+// surface, and a face much larger than a hole is not taken whole merely for being drawn.
+Eigen::RowVector3d uniform_surface_point(const Mesh& m, const std::vector<double>& area,
+                                         SeededRandom& rng) {
+  const double total = std::accumulate(area.begin(), area.end(), 0.0);
+  double x = rng.unit() * total;
+  Eigen::Index f = m.F.rows() - 1;
+  for (std::size_t k = 0; k < area.size(); ++k) {
+    x -= area[k];
+    if (x <= 0) {
+      f = Eigen::Index(k);
+      break;
+    }
+  }
+  double u = rng.unit(), v = rng.unit();
+  if (u + v > 1) u = 1 - u, v = 1 - v;
+  return m.V.row(m.F(f, 0)) + u * (m.V.row(m.F(f, 1)) - m.V.row(m.F(f, 0))) +
+         v * (m.V.row(m.F(f, 2)) - m.V.row(m.F(f, 0)));
+}
+
+// For every vertex, the first vertex at exactly its position: the corners of a soup's
+// triangles that meet at one point of the surface without sharing an index.
+std::vector<Eigen::Index> first_at_same_position(const Mesh& m) {
+  std::map<std::array<double, 3>, Eigen::Index> first;
+  std::vector<Eigen::Index> out(std::size_t(m.V.rows()));
+  for (Eigen::Index v = 0; v < m.V.rows(); ++v)
+    out[std::size_t(v)] =
+        first.emplace(std::array<double, 3>{m.V(v, 0), m.V(v, 1), m.V(v, 2)}, v).first->second;
+  return out;
+}
+
 // The faces for which keep(f) holds, their vertices renumbered in order of first use.
 template <class Keep>
 Mesh keep_faces(const Mesh& m, Keep&& keep) {
@@ -93,7 +126,7 @@ Mesh keep_faces(const Mesh& m, Keep&& keep) {
 Mesh holes(const Mesh& m, int count, double radius, SeededRandom& rng) {
   const std::vector<double> area = face_areas(m);
   std::vector<Eigen::RowVector3d> centres;
-  for (int k = 0; k < count; ++k) centres.push_back(surface_point(m, area, rng));
+  for (int k = 0; k < count; ++k) centres.push_back(uniform_surface_point(m, area, rng));
   return keep_faces(m, [&](Eigen::Index f) {
     const Eigen::RowVector3d c = centroid(m, f);
     for (const auto& p : centres)
@@ -361,24 +394,44 @@ Mesh perturb(const Mesh& mesh, Perturbation kind, int s, std::uint64_t seed) {
     case Perturbation::LargeHoles:
       return holes(mesh, s, 0.06 * d, rng);
     case Perturbation::Noise: {
+      // Noise moves points of the surface: a soup's corners at one position move together.
+      // Every vertex still draws its offset, so a welded mesh gets the offsets it always had.
+      const std::vector<Eigen::Index> first = first_at_same_position(mesh);
+      Eigen::MatrixXd offset(mesh.V.rows(), 3);
+      for (Eigen::Index v = 0; v < offset.rows(); ++v)
+        for (int a = 0; a < 3; ++a) offset(v, a) = 0.001 * s * d * gaussian(rng);
       Mesh out = mesh;
       for (Eigen::Index v = 0; v < out.V.rows(); ++v)
-        for (int a = 0; a < 3; ++a) out.V(v, a) += 0.001 * s * d * gaussian(rng);
+        out.V.row(v) += offset.row(first[std::size_t(v)]);
       return out;
     }
     case Perturbation::ShotNoise: {
-      Mesh out = mesh;
-      const Eigen::MatrixXd n = vertex_normals(mesh);
+      // As for noise, a shot moves a point of the surface, with every corner there, along the
+      // normal of all the faces that meet at it.
+      const std::vector<Eigen::Index> first = first_at_same_position(mesh);
+      Mesh joined = mesh;
+      for (Eigen::Index f = 0; f < joined.F.rows(); ++f)
+        for (int c = 0; c < 3; ++c) joined.F(f, c) = int(first[std::size_t(mesh.F(f, c))]);
+      const Eigen::MatrixXd n = vertex_normals(joined);
+      Eigen::MatrixXd shift = Eigen::MatrixXd::Zero(mesh.V.rows(), 3);
       const Eigen::Index count =
           std::max<Eigen::Index>(1, Eigen::Index(0.002 * s * double(mesh.V.rows())));
       for (Eigen::Index k = 0; k < count; ++k) {
-        const Eigen::Index v = Eigen::Index(rng.bits() % std::uint64_t(mesh.V.rows()));
-        out.V.row(v) += (rng.chance(0.5) ? 0.02 : -0.02) * d * n.row(v);
+        const Eigen::Index v = first[std::size_t(rng.bits() % std::uint64_t(mesh.V.rows()))];
+        shift.row(v) += (rng.chance(0.5) ? 0.02 : -0.02) * d * n.row(v);
       }
+      Mesh out = mesh;
+      for (Eigen::Index v = 0; v < out.V.rows(); ++v)
+        out.V.row(v) += shift.row(first[std::size_t(v)]);
       return out;
     }
-    case Perturbation::Decimate:
-      return collapse_to(mesh, (0.5 - 0.075 * (s - 1)) * double(mesh.V.rows()));
+    case Perturbation::Decimate: {
+      // The budget counts points of the surface, not a soup's repeated corners.
+      const std::vector<Eigen::Index> first = first_at_same_position(mesh);
+      std::size_t points = 0;
+      for (std::size_t v = 0; v < first.size(); ++v) points += first[v] == Eigen::Index(v);
+      return quadric_decimation(mesh, std::size_t((0.5 - 0.075 * (s - 1)) * double(points)));
+    }
     case Perturbation::Remesh:
       return collapse_to(subdivide(jitter(mesh, rng)), (0.75 + 0.25 * s) * double(mesh.V.rows()));
     case Perturbation::Cluster: {

@@ -11,14 +11,17 @@
 namespace arg {
 
 // What a scan or an export does to a model, each at strengths 1 (mild) to 5 (harsh). D is the
-// diagonal of the model's bounding box; areas are shares of the model's surface.
+// diagonal of the model's bounding box; areas are shares of the model's surface. A point is a
+// position on the surface: the corners of a soup's triangles that meet there without sharing an
+// index move together and count once, so noise displaces a soup without tearing it apart.
 enum class Perturbation {
-  SmallHoles,  // 4 s holes of radius 0.02 D
+  SmallHoles,  // 4 s holes of radius 0.02 D: the faces whose centre lies within it of a point
+               // drawn uniformly on the surface
   LargeHoles,  // s holes of radius 0.06 D
-  Noise,       // Gaussian offset of every vertex, sigma 0.001 s D per axis
+  Noise,       // Gaussian offset of every point, sigma 0.001 s D per axis
   ShotNoise,   // 0.2 s % of the vertices pushed 0.02 D along their normal, either way
-  Decimate,    // edge collapse down to 50 - 7.5 (s - 1) % of the vertices (50% .. 20%), or as
-               // far as collapses go on a soup whose triangles share too few edges
+  Decimate,    // quadric error edge collapses down to 50 - 7.5 (s - 1) % of the points (50% ..
+               // 20%), or as far as collapses go on a soup whose triangles share too few edges
   Remesh,      // midpoint subdivision, then edge collapse to (0.75 + 0.25 s) x the vertices:
                // the same surface with another triangulation
   Split,       // s random planes through the middle cut the surface into separate parts

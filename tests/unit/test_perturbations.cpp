@@ -1,6 +1,9 @@
 // The robustness benchmark's transformations: deterministic, and each does what it says.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <set>
+
 #include "common/errors.hpp"
 #include "eval/perturbations.hpp"
 #include "io/write_mesh.hpp"
@@ -80,6 +83,64 @@ TEST(Perturbations, NoiseAndScaleMoveVerticesByTheRightAmount) {
   for (Eigen::Index v = 0; v < shot.V.rows(); ++v) moved += shot.V.row(v) != model().V.row(v);
   EXPECT_GE(moved, 1);
   EXPECT_LE(moved, int(0.01 * double(shot.V.rows())) + 1);
+}
+
+// The same surface as a soup: every triangle with corners of its own.
+Mesh unwelded(const Mesh& m) {
+  Mesh soup;
+  soup.V.resize(3 * m.F.rows(), 3);
+  soup.F.resize(m.F.rows(), 3);
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      soup.V.row(3 * f + c) = m.V.row(m.F(f, c));
+      soup.F(f, c) = int(3 * f + c);
+    }
+  return soup;
+}
+
+std::size_t distinct_positions(const Mesh& m) {
+  std::set<std::array<double, 3>> seen;
+  for (Eigen::Index v = 0; v < m.V.rows(); ++v) seen.insert({m.V(v, 0), m.V(v, 1), m.V(v, 2)});
+  return seen.size();
+}
+
+TEST(Perturbations, NoiseMovesASoupsCoincidentCornersTogether) {
+  const Mesh soup = unwelded(model());
+  ASSERT_EQ(distinct_positions(soup), std::size_t(model().V.rows()));
+  for (Perturbation kind : {Perturbation::Noise, Perturbation::ShotNoise}) {
+    const Mesh noisy = perturb(soup, kind, 5, 1);
+    EXPECT_EQ(distinct_positions(noisy), std::size_t(model().V.rows())) << perturbation_name(kind);
+    EXPECT_GT((noisy.V - soup.V).norm(), 0) << perturbation_name(kind);
+  }
+}
+
+TEST(Perturbations, DecimationKeepsTheShapeOfACoarseModelAndCountsASoupsPointsOnce) {
+  const Mesh coarse = test::capsule(2, 0.6, 14, 10);
+  for (int s : {1, 3, 5}) {
+    const Mesh out = perturb(coarse, Perturbation::Decimate, s, 1);
+    EXPECT_NEAR(area(out), area(coarse), 0.15 * area(coarse)) << s;
+  }
+  const Mesh soup = unwelded(model());
+  const Mesh out = perturb(soup, Perturbation::Decimate, 3, 1);
+  EXPECT_LE(double(out.V.rows()), 0.35 * double(model().V.rows()) + 1);
+  EXPECT_NEAR(area(out), area(model()), 0.05 * area(model()));
+}
+
+TEST(Perturbations, ASmallHoleDoesNotTakeAFaceMuchLargerThanItself) {
+  // A square of two triangles beside a fine capsule: a hole lands on the square as often as
+  // its area says, but removes a triangle only if it falls near that triangle's centre.
+  Mesh m = model();
+  const Eigen::Index nv = m.V.rows(), nf = m.F.rows();
+  m.V.conservativeResize(nv + 4, 3);
+  m.V.bottomRows(4) << 3, -2, -2, 3, 2, -2, 3, 2, 2, 3, -2, 2;
+  m.F.conservativeResize(nf + 2, 3);
+  m.F.bottomRows(2) << int(nv), int(nv + 1), int(nv + 2), int(nv), int(nv + 2), int(nv + 3);
+  int square_lost = 0;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Mesh out = perturb(m, Perturbation::SmallHoles, 3, seed);
+    square_lost += area(out) < area(m) - 15.9;  // a triangle of the square is 8
+  }
+  EXPECT_LE(square_lost, 4);
 }
 
 TEST(Perturbations, NamesRoundTripAndBadStrengthsAreRefused) {
