@@ -10,6 +10,7 @@
 #include "common/errors.hpp"
 #include "common/random.hpp"
 #include "eval/quadric_decimation.hpp"
+#include "eval/refine_faces.hpp"
 #include "gen/seeded_random.hpp"
 #include "mesh/collapse_short_edges.hpp"
 
@@ -122,13 +123,44 @@ Mesh keep_faces(const Mesh& m, Keep&& keep) {
   return out;
 }
 
-// Removes the faces whose centre lies within `radius` of any of `count` random surface points.
+// Distance from p to the triangle a, b, c (Ericson, Real-Time Collision Detection, 5.1.5).
+double triangle_distance(const Eigen::RowVector3d& p, const Eigen::RowVector3d& a,
+                         const Eigen::RowVector3d& b, const Eigen::RowVector3d& c) {
+  const Eigen::RowVector3d ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return ap.norm();
+  const Eigen::RowVector3d bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return bp.norm();
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (p - (a + d1 / (d1 - d3) * ab)).norm();
+  const Eigen::RowVector3d cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return cp.norm();
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (p - (a + d2 / (d2 - d6) * ac)).norm();
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+    return (p - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).norm();
+  const double sum = va + vb + vc;
+  if (!(sum > 0)) return std::min({ap.norm(), bp.norm(), cp.norm()});  // degenerate
+  return (p - (a + vb / sum * ab + vc / sum * ac)).norm();
+}
+
 Mesh holes(const Mesh& m, int count, double radius, SeededRandom& rng) {
   const std::vector<double> area = face_areas(m);
   std::vector<Eigen::RowVector3d> centres;
   for (int k = 0; k < count; ++k) centres.push_back(uniform_surface_point(m, area, rng));
-  return keep_faces(m, [&](Eigen::Index f) {
-    const Eigen::RowVector3d c = centroid(m, f);
+  const Mesh fine = refine_faces(
+      m, 0.25 * radius,
+      [&](const Eigen::RowVector3d& a, const Eigen::RowVector3d& b, const Eigen::RowVector3d& c) {
+        for (const auto& p : centres)
+          if (triangle_distance(p, a, b, c) < radius) return true;
+        return false;
+      },
+      std::max<Eigen::Index>(4 * m.F.rows(), 200000));
+  return keep_faces(fine, [&](Eigen::Index f) {
+    const Eigen::RowVector3d c = centroid(fine, f);
     for (const auto& p : centres)
       if ((c - p).norm() < radius) return false;
     return true;

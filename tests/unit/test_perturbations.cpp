@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <set>
 
 #include "common/errors.hpp"
@@ -141,6 +142,21 @@ TEST(Perturbations, ASmallHoleDoesNotTakeAFaceMuchLargerThanItself) {
     square_lost += area(out) < area(m) - 15.9;  // a triangle of the square is 8
   }
   EXPECT_LE(square_lost, 4);
+}
+
+TEST(Perturbations, AHoleOnACoarseFaceRemovesAboutItsOwnArea) {
+  // A flat square of two triangles: one large hole (radius 0.06 D) takes at most its disc.
+  Mesh square;
+  square.V.resize(4, 3);
+  square.V << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
+  square.F.resize(2, 3);
+  square.F << 0, 1, 2, 0, 2, 3;
+  const double r = 0.06 * std::sqrt(2.0), disc = M_PI * r * r;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const double removed = 1.0 - area(perturb(square, Perturbation::LargeHoles, 1, seed));
+    EXPECT_GT(removed, 0.2 * disc) << seed;  // a quarter disc at the least, in a corner
+    EXPECT_LT(removed, 1.15 * disc) << seed;
+  }
 }
 
 TEST(Perturbations, NamesRoundTripAndBadStrengthsAreRefused) {
