@@ -46,6 +46,34 @@ TEST(Panorama, TurningAViewAboutItsAxisLeavesTheFeaturesAsTheyAre) {
   for (std::size_t k = 0; k < a.size(); ++k) EXPECT_NEAR(a[k], b[k], 1e-6);
 }
 
+// The mean of the orientation images over the samples where a surface was seen.
+double mean_facing(const PanoramicViews& v) {
+  double sum = 0;
+  int seen = 0;
+  for (int a = 0; a < 3; ++a)
+    for (std::size_t k = 0; k < v.image[std::size_t(2 * a)].size(); ++k)
+      if (v.image[std::size_t(2 * a)][k] > 0) sum += v.image[std::size_t(2 * a + 1)][k], ++seen;
+  return seen ? sum / seen : 0;
+}
+
+TEST(Panorama, NoiseThatScattersTheNormalsBarelyDarkensTheOrientationImages) {
+  // A fine sphere, its vertices moved 0.3% of its size at random: every face's normal tilts
+  // by several degrees, its extent barely moves.
+  const Mesh sphere = test::sphere(120, 180);
+  Mesh noisy = sphere;
+  std::uint64_t state = 12345;
+  auto unit = [&state] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return double(state >> 11) / double(1ULL << 53) - 0.5;
+  };
+  for (Eigen::Index v = 0; v < noisy.V.rows(); ++v)
+    for (int a = 0; a < 3; ++a) noisy.V(v, a) += 0.02 * unit();  // sd about 0.006 = 0.3% of 2
+  const double clean = mean_facing(panoramic_views(sphere, 64, 2.5));
+  const double rough = mean_facing(panoramic_views(noisy, 64, 2.5));
+  EXPECT_GT(clean, 0.4);
+  EXPECT_GT(rough, clean - 0.08) << clean << " " << rough;  // the normals alone: -0.11
+}
+
 // A w x h grid sheet, flat or rolled into a cylinder of radius `radius` (isometric: lengths on
 // the sheet do not change).
 Mesh sheet(double w, double h, int nx, int ny, double radius) {
