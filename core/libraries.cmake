@@ -18,7 +18,8 @@ set(ARG_METHOD_SOURCES
     io/read_ply.cpp io/read_stl.cpp io/read_stl_ascii.cpp io/soup_importer.cpp
     io/soup_to_mesh.cpp io/text_scan.cpp io/texture_sampling.cpp io/tinygltf_impl.cpp
     io/triangulate_polygon.cpp io/write_mesh.cpp
-    mesh/clean_mesh.cpp mesh/collapse_short_edges.cpp mesh/connected_components.cpp
+    mesh/clean_mesh.cpp mesh/coincident_vertices.cpp mesh/collapse_short_edges.cpp
+    mesh/connected_components.cpp
     mesh/append_faces.cpp mesh/boundary_loops.cpp mesh/bridge_pieces.cpp mesh/distance_field.cpp mesh/face_subset.cpp mesh/fill_holes.cpp mesh/marching_tetrahedra.cpp
     mesh/mesh_edges.cpp
     mesh/normal_pose.cpp mesh/normalize_pose.cpp mesh/surface_area.cpp mesh/taubin_smoothing.cpp

@@ -12,6 +12,7 @@
 #include "eval/quadric_decimation.hpp"
 #include "eval/refine_faces.hpp"
 #include "gen/seeded_random.hpp"
+#include "mesh/coincident_vertices.hpp"
 #include "mesh/collapse_short_edges.hpp"
 
 namespace arg {
@@ -52,48 +53,49 @@ Eigen::RowVector3d centroid(const Mesh& m, Eigen::Index f) {
   return (m.V.row(m.F(f, 0)) + m.V.row(m.F(f, 1)) + m.V.row(m.F(f, 2))) / 3.0;
 }
 
-// A point on the surface, area-weighted: the centroid of a face drawn with probability
-// proportional to its area.
-Eigen::RowVector3d surface_point(const Mesh& m, const std::vector<double>& area,
-                                 SeededRandom& rng) {
+// A face drawn with probability proportional to its area.
+Eigen::Index area_weighted_face(const std::vector<double>& area, SeededRandom& rng) {
   const double total = std::accumulate(area.begin(), area.end(), 0.0);
   double x = rng.unit() * total;
   for (std::size_t f = 0; f < area.size(); ++f) {
     x -= area[f];
-    if (x <= 0) return centroid(m, Eigen::Index(f));
+    if (x <= 0) return Eigen::Index(f);
   }
-  return centroid(m, m.F.rows() - 1);
+  return Eigen::Index(area.size()) - 1;
 }
 
-// A point drawn uniformly on the surface: a face with probability proportional to its area,
-// then a point uniformly inside it. A hole centred there is as likely on any patch of the
-// surface, and a face much larger than a hole is not taken whole merely for being drawn.
+// A point on the surface, area-weighted: the centroid of a face drawn by area.
+Eigen::RowVector3d surface_point(const Mesh& m, const std::vector<double>& area,
+                                 SeededRandom& rng) {
+  return centroid(m, area_weighted_face(area, rng));
+}
+
+// A point drawn uniformly on the surface: a face drawn by area, then a point uniformly inside
+// it. A hole centred there is as likely on any patch of the surface.
 Eigen::RowVector3d uniform_surface_point(const Mesh& m, const std::vector<double>& area,
                                          SeededRandom& rng) {
-  const double total = std::accumulate(area.begin(), area.end(), 0.0);
-  double x = rng.unit() * total;
-  Eigen::Index f = m.F.rows() - 1;
-  for (std::size_t k = 0; k < area.size(); ++k) {
-    x -= area[k];
-    if (x <= 0) {
-      f = Eigen::Index(k);
-      break;
-    }
-  }
+  const Eigen::Index f = area_weighted_face(area, rng);
   double u = rng.unit(), v = rng.unit();
   if (u + v > 1) u = 1 - u, v = 1 - v;
   return m.V.row(m.F(f, 0)) + u * (m.V.row(m.F(f, 1)) - m.V.row(m.F(f, 0))) +
          v * (m.V.row(m.F(f, 2)) - m.V.row(m.F(f, 0)));
 }
 
-// For every vertex, the first vertex at exactly its position: the corners of a soup's
-// triangles that meet at one point of the surface without sharing an index.
-std::vector<Eigen::Index> first_at_same_position(const Mesh& m) {
-  std::map<std::array<double, 3>, Eigen::Index> first;
-  std::vector<Eigen::Index> out(std::size_t(m.V.rows()));
-  for (Eigen::Index v = 0; v < m.V.rows(); ++v)
-    out[std::size_t(v)] =
-        first.emplace(std::array<double, 3>{m.V(v, 0), m.V(v, 1), m.V(v, 2)}, v).first->second;
+// The vertices that are the first at their position (mesh/coincident_vertices.hpp): the
+// points of the surface, a soup's repeated corners counted once.
+std::vector<int> surface_points(const std::vector<int>& first) {
+  std::vector<int> out;
+  for (std::size_t v = 0; v < first.size(); ++v)
+    if (first[v] == int(v)) out.push_back(int(v));
+  return out;
+}
+
+// The mesh with the vertices at one position merged into the first of them (the others stay,
+// unused, so that vertex numbers and the random draws that follow them do not move).
+Mesh joined_at_same_position(const Mesh& m, const std::vector<int>& first) {
+  Mesh out = m;
+  for (Eigen::Index f = 0; f < out.F.rows(); ++f)
+    for (int c = 0; c < 3; ++c) out.F(f, c) = first[std::size_t(m.F(f, c))];
   return out;
 }
 
@@ -147,6 +149,12 @@ double triangle_distance(const Eigen::RowVector3d& p, const Eigen::RowVector3d& 
   return (p - (a + vb / sum * ab + vc / sum * ac)).norm();
 }
 
+// Removes the surface within `radius` of each of `count` points drawn uniformly on it: the
+// faces whose centre lies within a radius of one go. Faces that the circle of a hole crosses
+// (some of the face within the radius, some beyond) are first cut (conforming, the mesh left
+// as it was elsewhere, eval/refine_faces.hpp) until their edges are at most a quarter of the
+// radius, so that a hole takes about its own area on a coarse model too, not whole faces many
+// times its size.
 Mesh holes(const Mesh& m, int count, double radius, SeededRandom& rng) {
   const std::vector<double> area = face_areas(m);
   std::vector<Eigen::RowVector3d> centres;
@@ -154,8 +162,10 @@ Mesh holes(const Mesh& m, int count, double radius, SeededRandom& rng) {
   const Mesh fine = refine_faces(
       m, 0.25 * radius,
       [&](const Eigen::RowVector3d& a, const Eigen::RowVector3d& b, const Eigen::RowVector3d& c) {
-        for (const auto& p : centres)
-          if (triangle_distance(p, a, b, c) < radius) return true;
+        for (const auto& p : centres) {
+          const double farthest = std::max({(a - p).norm(), (b - p).norm(), (c - p).norm()});
+          if (farthest > radius && triangle_distance(p, a, b, c) < radius) return true;
+        }
         return false;
       },
       std::max<Eigen::Index>(4 * m.F.rows(), 200000));
@@ -309,15 +319,17 @@ Eigen::RowVector3d random_direction(SeededRandom& rng) {
   }
 }
 
-// Moves every vertex by up to 1% of the mean edge length (a random offset), so that a
-// remeshing does not merely undo its own subdivision.
-Mesh jitter(const Mesh& m, SeededRandom& rng) {
+// Moves every point by up to 1% of the mean edge length (a random offset), so that a
+// remeshing does not merely undo its own subdivision; corners at one position move together.
+Mesh jitter(const Mesh& m, const std::vector<int>& first, SeededRandom& rng) {
   double sum = 0;
   for (Eigen::Index f = 0; f < m.F.rows(); ++f)
     for (int c = 0; c < 3; ++c) sum += (m.V.row(m.F(f, c)) - m.V.row(m.F(f, (c + 1) % 3))).norm();
   const double step = 0.01 * sum / double(std::max<Eigen::Index>(1, 3 * m.F.rows()));
+  Eigen::MatrixXd offset(m.V.rows(), 3);
+  for (Eigen::Index v = 0; v < m.V.rows(); ++v) offset.row(v) = step * random_direction(rng);
   Mesh out = m;
-  for (Eigen::Index v = 0; v < out.V.rows(); ++v) out.V.row(v) += step * random_direction(rng);
+  for (Eigen::Index v = 0; v < out.V.rows(); ++v) out.V.row(v) += offset.row(first[std::size_t(v)]);
   return out;
 }
 
@@ -427,8 +439,9 @@ Mesh perturb(const Mesh& mesh, Perturbation kind, int s, std::uint64_t seed) {
       return holes(mesh, s, 0.06 * d, rng);
     case Perturbation::Noise: {
       // Noise moves points of the surface: a soup's corners at one position move together.
-      // Every vertex still draws its offset, so a welded mesh gets the offsets it always had.
-      const std::vector<Eigen::Index> first = first_at_same_position(mesh);
+      // Every vertex still draws its offset, so a mesh without coincident vertices gets the
+      // offsets it always had.
+      const std::vector<int> first = first_at_same_position(mesh);
       Eigen::MatrixXd offset(mesh.V.rows(), 3);
       for (Eigen::Index v = 0; v < offset.rows(); ++v)
         for (int a = 0; a < 3; ++a) offset(v, a) = 0.001 * s * d * gaussian(rng);
@@ -439,17 +452,15 @@ Mesh perturb(const Mesh& mesh, Perturbation kind, int s, std::uint64_t seed) {
     }
     case Perturbation::ShotNoise: {
       // As for noise, a shot moves a point of the surface, with every corner there, along the
-      // normal of all the faces that meet at it.
-      const std::vector<Eigen::Index> first = first_at_same_position(mesh);
-      Mesh joined = mesh;
-      for (Eigen::Index f = 0; f < joined.F.rows(); ++f)
-        for (int c = 0; c < 3; ++c) joined.F(f, c) = int(first[std::size_t(mesh.F(f, c))]);
-      const Eigen::MatrixXd n = vertex_normals(joined);
+      // normal of all the faces that meet at it; the shots are counted and drawn among points.
+      const std::vector<int> first = first_at_same_position(mesh);
+      const std::vector<int> points = surface_points(first);
+      const Eigen::MatrixXd n = vertex_normals(joined_at_same_position(mesh, first));
       Eigen::MatrixXd shift = Eigen::MatrixXd::Zero(mesh.V.rows(), 3);
-      const Eigen::Index count =
-          std::max<Eigen::Index>(1, Eigen::Index(0.002 * s * double(mesh.V.rows())));
-      for (Eigen::Index k = 0; k < count; ++k) {
-        const Eigen::Index v = first[std::size_t(rng.bits() % std::uint64_t(mesh.V.rows()))];
+      const std::size_t count =
+          std::max<std::size_t>(1, std::size_t(0.002 * s * double(points.size())));
+      for (std::size_t k = 0; k < count; ++k) {
+        const int v = points[std::size_t(rng.bits() % std::uint64_t(points.size()))];
         shift.row(v) += (rng.chance(0.5) ? 0.02 : -0.02) * d * n.row(v);
       }
       Mesh out = mesh;
@@ -459,13 +470,19 @@ Mesh perturb(const Mesh& mesh, Perturbation kind, int s, std::uint64_t seed) {
     }
     case Perturbation::Decimate: {
       // The budget counts points of the surface, not a soup's repeated corners.
-      const std::vector<Eigen::Index> first = first_at_same_position(mesh);
-      std::size_t points = 0;
-      for (std::size_t v = 0; v < first.size(); ++v) points += first[v] == Eigen::Index(v);
+      const std::size_t points = surface_points(first_at_same_position(mesh)).size();
       return quadric_decimation(mesh, std::size_t((0.5 - 0.075 * (s - 1)) * double(points)));
     }
-    case Perturbation::Remesh:
-      return collapse_to(subdivide(jitter(mesh, rng)), (0.75 + 0.25 * s) * double(mesh.V.rows()));
+    case Perturbation::Remesh: {
+      // On the points of the surface, so that a soup is subdivided and collapsed as one surface.
+      const std::vector<int> first = first_at_same_position(mesh);
+      const std::size_t points = surface_points(first).size();
+      Mesh jittered = jitter(joined_at_same_position(mesh, first), first, rng);
+      // A soup's merged corners would count against the vertex budget: drop them.
+      if (points < std::size_t(mesh.V.rows()))
+        jittered = keep_faces(jittered, [](Eigen::Index) { return true; });
+      return collapse_to(subdivide(jittered), (0.75 + 0.25 * s) * double(points));
+    }
     case Perturbation::Cluster: {
       const Eigen::RowVector3d shift(rng.unit(), rng.unit(), rng.unit());
       return cluster_to(mesh, (0.5 - 0.075 * (s - 1)) * double(mesh.V.rows()), shift);

@@ -16,13 +16,13 @@ namespace arg {
 // index move together and count once, so noise displaces a soup without tearing it apart.
 enum class Perturbation {
   SmallHoles,  // 4 s holes of radius 0.02 D: the faces whose centre lies within it of a point
-               // drawn uniformly on the surface
+               // drawn uniformly on the surface, faces the hole's rim crosses cut finer first
   LargeHoles,  // s holes of radius 0.06 D
   Noise,       // Gaussian offset of every point, sigma 0.001 s D per axis
-  ShotNoise,   // 0.2 s % of the vertices pushed 0.02 D along their normal, either way
+  ShotNoise,   // 0.2 s % of the points pushed 0.02 D along their normal, either way
   Decimate,    // quadric error edge collapses down to 50 - 7.5 (s - 1) % of the points (50% ..
                // 20%), or as far as collapses go on a soup whose triangles share too few edges
-  Remesh,      // midpoint subdivision, then edge collapse to (0.75 + 0.25 s) x the vertices:
+  Remesh,      // midpoint subdivision, then edge collapse to (0.75 + 0.25 s) x the points:
                // the same surface with another triangulation
   Split,       // s random planes through the middle cut the surface into separate parts
   Partial,     // the part of the surface nearest a random point, 5 s % of the area, removed

@@ -7,26 +7,14 @@
 #include <utility>
 #include <vector>
 
+#include "mesh/coincident_vertices.hpp"
+
 namespace arg {
-namespace {
-
-// Vertices at one position share an index from here on, so that a split edge is split for
-// every face along it, whether or not the input welded them.
-std::vector<int> first_at_position(const Mesh& m) {
-  std::map<std::array<double, 3>, int> first;
-  std::vector<int> out(std::size_t(m.V.rows()));
-  for (Eigen::Index v = 0; v < m.V.rows(); ++v)
-    out[std::size_t(v)] =
-        first.emplace(std::array<double, 3>{m.V(v, 0), m.V(v, 1), m.V(v, 2)}, int(v)).first->second;
-  return out;
-}
-
-}  // namespace
 
 Mesh refine_faces(const Mesh& mesh, double max_edge, const NearFace& near, Eigen::Index max_faces) {
   std::vector<Eigen::RowVector3d> points(std::size_t(mesh.V.rows()));
   for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) points[std::size_t(v)] = mesh.V.row(v);
-  const std::vector<int> first = first_at_position(mesh);
+  const std::vector<int> first = first_at_same_position(mesh);
   std::vector<std::array<int, 3>> faces(std::size_t(mesh.F.rows()));
   std::vector<Eigen::Index> source(faces.size());  // the input face each face lies in
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
@@ -52,7 +40,6 @@ Mesh refine_faces(const Mesh& mesh, double max_edge, const NearFace& near, Eigen
           midpoint.emplace(key(f[std::size_t(k)], f[std::size_t((k + 1) % 3)]), -1);
     }
     if (midpoint.empty()) break;
-    if (Eigen::Index(faces.size() + 3 * midpoint.size()) > max_faces) break;
     for (auto& [edge, id] : midpoint) {
       id = int(points.size());
       points.push_back(0.5 * (points[std::size_t(edge.first)] + points[std::size_t(edge.second)]));
@@ -99,6 +86,10 @@ Mesh refine_faces(const Mesh& mesh, double max_edge, const NearFace& near, Eigen
             add(a, ab, c, s), add(ab, bc, c, s);
         }
       }
+    }
+    if (Eigen::Index(next.size()) > max_faces) {  // the pass is not taken
+      points.resize(points.size() - midpoint.size());
+      break;
     }
     faces = std::move(next);
     source = std::move(next_source);

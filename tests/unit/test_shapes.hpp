@@ -92,4 +92,17 @@ inline Mesh transformed(const Mesh& m, const Eigen::Matrix3d& R, const Eigen::Ve
   return out;
 }
 
+// The same surface as a soup: every triangle with corners of its own.
+inline Mesh unwelded(const Mesh& m) {
+  Mesh soup;
+  soup.V.resize(3 * m.F.rows(), 3);
+  soup.F.resize(m.F.rows(), 3);
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      soup.V.row(3 * f + c) = m.V.row(m.F(f, c));
+      soup.F(f, c) = int(3 * f + c);
+    }
+  return soup;
+}
+
 }  // namespace arg::test
