@@ -52,7 +52,7 @@ for s in sets:
             continue
         name = names.get(r["method"], r["method"])
         if r["method"] == "arg":
-            name += " (training score: weights tuned on all three sets)"
+            name += " (training score: the shipped weights were learnt on all three sets)"
         print(f"| {s} | {name} | {r['nn']:.3f} | {r['ft']:.3f} | {r['st']:.3f} | {r['e']:.3f} | "
               f"{r['dcg']:.3f} | {r['map']:.3f} | {r['build_ms_median']:.1f} | "
               f"{r['sim_us_median']:.2f} | {len(r['failed'])} |")
@@ -68,7 +68,8 @@ for s in sets:
         print(f"- held out {s}: `{held[s][5]}`")
 final = re.search(r"learnt weights \(all models.*\n(.*)", tune_text)
 if final:
-    print(f"- all three sets (the shipped defaults, so their rows above are training scores): "
+    print(f"- all three sets, learnt by this run (the `arg` preset that ships may be an earlier "
+          f"run's; its rows above are training scores either way): "
           f"`{final.group(1).strip()}`")
 
 # Robustness: mAP of perturbed queries against the clean set, per transform and strength.
