@@ -133,11 +133,7 @@ TEST(Perturbations, ASmallHoleDoesNotTakeAFaceMuchLargerThanItself) {
 
 TEST(Perturbations, AHoleOnACoarseFaceRemovesAboutItsOwnArea) {
   // A flat square of two triangles: one large hole (radius 0.06 D) takes at most its disc.
-  Mesh square;
-  square.V.resize(4, 3);
-  square.V << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
-  square.F.resize(2, 3);
-  square.F << 0, 1, 2, 0, 2, 3;
+  const Mesh square = test::unit_square();
   const double r = 0.06 * std::sqrt(2.0), disc = M_PI * r * r;
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     const double removed = 1.0 - area(perturb(square, Perturbation::LargeHoles, 1, seed));

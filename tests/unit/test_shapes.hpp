@@ -92,6 +92,16 @@ inline Mesh transformed(const Mesh& m, const Eigen::Matrix3d& R, const Eigen::Ve
   return out;
 }
 
+// The unit square in the z = 0 plane as two triangles: an open sheet of large faces.
+inline Mesh unit_square() {
+  Mesh square;
+  square.V.resize(4, 3);
+  square.V << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
+  square.F.resize(2, 3);
+  square.F << 0, 1, 2, 0, 2, 3;
+  return square;
+}
+
 // The same surface as a soup: every triangle with corners of its own.
 inline Mesh unwelded(const Mesh& m) {
   Mesh soup;

@@ -57,11 +57,7 @@ TEST(WatertightProxy, ASoupOfTwoIntersectingBoxesBecomesOneClosedManifold) {
 
 TEST(WatertightProxy, ASheetBecomesAThinClosedSlabAndAHoleIsClosed) {
   // An open square sheet: its proxy is a closed slab about two offsets thick.
-  Mesh sheet;
-  sheet.V.resize(4, 3);
-  sheet.V << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
-  sheet.F.resize(2, 3);
-  sheet.F << 0, 1, 2, 0, 2, 3;
+  const Mesh sheet = test::unit_square();
   const test::Inspection slab = test::inspect(watertight_proxy(sheet).mesh);
   EXPECT_TRUE(slab.every_edge_has_two_triangles && slab.every_fan_is_one_cycle);
   EXPECT_EQ(slab.euler(), 2);
