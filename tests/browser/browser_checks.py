@@ -15,6 +15,7 @@ from typing import Any, Dict, List, Optional, Tuple
 
 import psycopg
 from PIL import Image, ImageStat
+from selenium.common.exceptions import WebDriverException
 from selenium.webdriver.common.by import By
 from selenium.webdriver.remote.webdriver import WebDriver
 from selenium.webdriver.remote.webelement import WebElement
@@ -176,6 +177,17 @@ class Browser:
         expect(sims == sorted(sims) and all(0 <= s <= 1 for s in sims), f"SIMs not ascending in [0, 1]: {sims}")
 
     def more_like_this_filtered(self) -> None:
+        # Chromium's inspector now and then loses a node while the page is being replaced
+        # ("Node with given id does not belong to the document"): a lookup that raced the
+        # navigation is tried again from a fresh page; a wrong ranking is never retried.
+        for attempt in range(3):
+            try:
+                return self.more_like_this_filtered_once()
+            except WebDriverException:
+                if attempt == 2:
+                    raise
+
+    def more_like_this_filtered_once(self) -> None:
         model = self.models[-1]
         self.open(f"object/{model['id']}", "#title")
         Select(self.d.find_element(By.CSS_SELECTOR, "form.filters select[name='class']")
