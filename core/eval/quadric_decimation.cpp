@@ -2,7 +2,6 @@
 #include "eval/quadric_decimation.hpp"
 
 #include <array>
-#include <map>
 #include <mutex>
 #include <vector>
 
@@ -16,6 +15,8 @@
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
+
+#include "mesh/coincident_vertices.hpp"
 
 namespace arg {
 namespace {
@@ -46,17 +47,17 @@ void silence_openmesh() {
 Mesh quadric_decimation(const Mesh& mesh, std::size_t target_vertices) {
   silence_openmesh();
   HalfedgeMesh hm;
-  // One vertex per distinct position, in order of first use by a face.
-  std::map<std::array<double, 3>, Vertex> at;
+  // One vertex per distinct position (mesh/coincident_vertices.hpp), in order of first use by a
+  // face.
+  const std::vector<int> first = first_at_same_position(mesh);
   std::vector<Vertex> handle(std::size_t(mesh.V.rows()));
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
     for (int c = 0; c < 3; ++c) {
-      const Eigen::Index v = mesh.F(f, c);
-      if (handle[std::size_t(v)].is_valid()) continue;
-      const std::array<double, 3> p{mesh.V(v, 0), mesh.V(v, 1), mesh.V(v, 2)};
-      auto [it, fresh] = at.emplace(p, Vertex());
-      if (fresh) it->second = hm.add_vertex(HalfedgeMesh::Point(p[0], p[1], p[2]));
-      handle[std::size_t(v)] = it->second;
+      const int v = mesh.F(f, c), at = first[std::size_t(v)];
+      if (!handle[std::size_t(at)].is_valid())
+        handle[std::size_t(at)] =
+            hm.add_vertex(HalfedgeMesh::Point(mesh.V(at, 0), mesh.V(at, 1), mesh.V(at, 2)));
+      handle[std::size_t(v)] = handle[std::size_t(at)];
     }
   // Faces the halfedge structure cannot hold, and faces with a repeated corner, stay as given.
   std::vector<std::array<Eigen::RowVector3d, 3>> aside;
