@@ -71,6 +71,75 @@ TEST(WatertightProxy, ASheetBecomesAThinClosedSlabAndAHoleIsClosed) {
   EXPECT_NEAR(surface_area(proxy), 4 * M_PI, 0.2 * 4 * M_PI);
 }
 
+// The unit sphere without the faces whose centre lies above z = `above`.
+Mesh sphere_cut_above(double above) {
+  const Mesh whole = test::sphere(40, 60);
+  Mesh cut = whole;
+  Eigen::Index kept = 0;
+  for (Eigen::Index f = 0; f < whole.F.rows(); ++f) {
+    const double z =
+        (whole.V(whole.F(f, 0), 2) + whole.V(whole.F(f, 1), 2) + whole.V(whole.F(f, 2), 2)) / 3.0;
+    if (z <= above) cut.F.row(kept++) = whole.F.row(f);
+  }
+  cut.F.conservativeResize(kept, 3);
+  return cut;
+}
+
+TEST(WatertightProxy, AShapeWithAHoleWiderThanTheOffsetKeepsItsVolume) {
+  // A cap of radius 0.6 gone: the hole is about 29 cells wide, and the flood gets in.
+  const Mesh open = sphere_cut_above(0.8);
+  const double ball = 4.0 / 3.0 * M_PI;
+  ProxyOptions flood_only;
+  flood_only.min_open = 0;
+  const test::Inspection shell = test::inspect(watertight_proxy(open, flood_only).mesh);
+  EXPECT_LT(shell.signed_volume, 0.5 * ball);  // the flood alone: a thin shell of the surface
+  const test::Inspection r = test::inspect(watertight_proxy(open).mesh);
+  EXPECT_TRUE(r.every_edge_has_two_triangles && r.every_fan_is_one_cycle);
+  EXPECT_EQ(r.components, 1);
+  EXPECT_EQ(r.euler(), 2);
+  EXPECT_GT(r.signed_volume, 0.85 * ball);  // what saw out only through the hole is filled
+  EXPECT_LT(r.signed_volume, 1.25 * ball);
+}
+
+Eigen::RowVector3d face_centre(const Mesh& m, Eigen::Index f) {
+  return (m.V.row(m.F(f, 0)) + m.V.row(m.F(f, 1)) + m.V.row(m.F(f, 2))) / 3.0;
+}
+
+TEST(WatertightProxy, WhatClosesAHoleTakesItsColourFromNearbyFaces) {
+  // The triangles that close what saw out only through the hole lie away from the input: each
+  // still takes an input triangle about as near as the nearest (within 6 cells of 1/24).
+  const Mesh open = sphere_cut_above(0.8);
+  const Proxy proxy = watertight_proxy(open);
+  ASSERT_EQ(proxy.source_face.size(), std::size_t(proxy.mesh.F.rows()));
+  std::vector<Eigen::RowVector3d> centres;
+  for (Eigen::Index g = 0; g < open.F.rows(); ++g) centres.push_back(face_centre(open, g));
+  double worst = 0;
+  for (Eigen::Index f = 0; f < proxy.mesh.F.rows(); f += 5) {  // every fifth: a second or so
+    const Eigen::RowVector3d c = face_centre(proxy.mesh, f);
+    double nearest = HUGE_VAL;
+    for (const Eigen::RowVector3d& p : centres) nearest = std::min(nearest, (p - c).squaredNorm());
+    nearest = std::sqrt(nearest);
+    const int s = proxy.source_face[std::size_t(f)];
+    ASSERT_TRUE(s >= 0 && s < open.F.rows());
+    worst = std::max(worst, (centres[std::size_t(s)] - c).norm() - nearest);
+  }
+  EXPECT_LT(worst, 0.25);
+}
+
+TEST(WatertightProxy, ADishAndASheetSeeOutAndStayThin) {
+  // A spherical cap 0.4 deep and 1.6 wide: every point of its inside sees much of the sky, so
+  // it stays the thin slab the flood alone gives (filled, it would hold about 0.44 more).
+  const Mesh dish = sphere_cut_above(-0.6);
+  ProxyOptions flood_only;
+  flood_only.min_open = 0;
+  const double thin = test::inspect(watertight_proxy(dish, flood_only).mesh).signed_volume;
+  const test::Inspection r = test::inspect(watertight_proxy(dish).mesh);
+  EXPECT_TRUE(r.every_edge_has_two_triangles && r.every_fan_is_one_cycle);
+  EXPECT_LT(r.signed_volume, thin + 0.1);
+  const test::Inspection slab = test::inspect(watertight_proxy(test::unit_square()).mesh);
+  EXPECT_LT(slab.signed_volume, 0.1);  // about 1 x 1 x two offsets (2 / 48)
+}
+
 TEST(WatertightProxy, PartsFartherApartThanTheOffsetStaySeparate) {
   Mesh m;
   m.V.resize(0, 3);
@@ -85,6 +154,12 @@ TEST(WatertightProxy, BadOptionsAreInputErrors) {
   ProxyOptions bad;
   bad.resolution = 4;
   EXPECT_THROW(watertight_proxy(two_intersecting_boxes(), bad), InputError);
+  ProxyOptions too_many;
+  too_many.min_open = 27;
+  EXPECT_THROW(watertight_proxy(two_intersecting_boxes(), too_many), InputError);
+  ProxyOptions negative;
+  negative.min_open = -1;
+  EXPECT_THROW(watertight_proxy(two_intersecting_boxes(), negative), InputError);
   EXPECT_THROW(watertight_proxy(Mesh{}), InputError);
 }
 
