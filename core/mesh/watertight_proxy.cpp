@@ -16,6 +16,24 @@ namespace arg {
 
 namespace {
 
+// Breadth first from the points in `queue`: `step(from, to)` is called for each 6-neighbour `to`
+// of each point taken, and pushes `to` onto the queue when it takes it.
+template <class Step>
+void grow(const SampleGrid& g, std::vector<std::size_t>& queue, Step step,
+          const StopRequested& stop) {
+  const std::size_t nx = std::size_t(g.nx), ny = std::size_t(g.ny), nz = std::size_t(g.nz);
+  for (std::size_t q = 0; q < queue.size(); ++q) {
+    if ((q & 65535) == 0) check_interrupt(stop);
+    const std::size_t k = queue[q], x = k % nx, y = (k / nx) % ny, z = k / (nx * ny);
+    if (x > 0) step(k, k - 1);
+    if (x + 1 < nx) step(k, k + 1);
+    if (y > 0) step(k, k - nx);
+    if (y + 1 < ny) step(k, k + nx);
+    if (z > 0) step(k, k - nx * ny);
+    if (z + 1 < nz) step(k, k + nx * ny);
+  }
+}
+
 // Grid points reachable from the border in 6-neighbour steps through points where
 // `passable(k, on_border)` holds.
 template <class Passable>
@@ -34,16 +52,8 @@ std::vector<char> flood_from_border(const SampleGrid& g, Passable passable,
       for (std::size_t x = 0; x < nx; ++x)
         if (x == 0 || y == 0 || z == 0 || x + 1 == nx || y + 1 == ny || z + 1 == nz)
           visit((z * ny + y) * nx + x, true);
-  for (std::size_t q = 0; q < queue.size(); ++q) {
-    if ((q & 65535) == 0) check_interrupt(stop);
-    const std::size_t k = queue[q], x = k % nx, y = (k / nx) % ny, z = k / (nx * ny);
-    if (x > 0) visit(k - 1, false);
-    if (x + 1 < nx) visit(k + 1, false);
-    if (y > 0) visit(k - nx, false);
-    if (y + 1 < ny) visit(k + nx, false);
-    if (z > 0) visit(k - nx * ny, false);
-    if (z + 1 < nz) visit(k + nx * ny, false);
-  }
+  grow(
+      g, queue, [&](std::size_t, std::size_t to) { visit(to, false); }, stop);
   return reached;
 }
 
@@ -107,28 +117,18 @@ std::vector<char> exterior(const DistanceField& field, double offset, int min_op
 // band, which close what saw out only through holes.
 std::vector<std::int32_t> nearest_everywhere(const DistanceField& field,
                                              const StopRequested& stop) {
-  const SampleGrid& g = field.grid;
-  const std::size_t nx = std::size_t(g.nx), ny = std::size_t(g.ny), nz = std::size_t(g.nz);
   std::vector<std::int32_t> nearest = field.nearest;
   std::vector<std::size_t> queue;
   for (std::size_t k = 0; k < nearest.size(); ++k)
     if (nearest[k] >= 0) queue.push_back(k);
-  auto visit = [&](std::size_t k, std::int32_t face) {
-    if (nearest[k] >= 0) return;
-    nearest[k] = face;
-    queue.push_back(k);
-  };
-  for (std::size_t q = 0; q < queue.size(); ++q) {
-    if ((q & 65535) == 0) check_interrupt(stop);
-    const std::size_t k = queue[q], x = k % nx, y = (k / nx) % ny, z = k / (nx * ny);
-    const std::int32_t face = nearest[k];
-    if (x > 0) visit(k - 1, face);
-    if (x + 1 < nx) visit(k + 1, face);
-    if (y > 0) visit(k - nx, face);
-    if (y + 1 < ny) visit(k + nx, face);
-    if (z > 0) visit(k - nx * ny, face);
-    if (z + 1 < nz) visit(k + nx * ny, face);
-  }
+  grow(
+      field.grid, queue,
+      [&](std::size_t from, std::size_t to) {
+        if (nearest[to] >= 0) return;
+        nearest[to] = nearest[from];
+        queue.push_back(to);
+      },
+      stop);
   return nearest;
 }
 

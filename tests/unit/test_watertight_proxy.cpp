@@ -85,13 +85,18 @@ Mesh sphere_cut_above(double above) {
   return cut;
 }
 
+// The first flood alone, as builders before 1.5 made the proxy.
+ProxyOptions flood_only() {
+  ProxyOptions o;
+  o.min_open = 0;
+  return o;
+}
+
 TEST(WatertightProxy, AShapeWithAHoleWiderThanTheOffsetKeepsItsVolume) {
   // A cap of radius 0.6 gone: the hole is about 29 cells wide, and the flood gets in.
   const Mesh open = sphere_cut_above(0.8);
   const double ball = 4.0 / 3.0 * M_PI;
-  ProxyOptions flood_only;
-  flood_only.min_open = 0;
-  const test::Inspection shell = test::inspect(watertight_proxy(open, flood_only).mesh);
+  const test::Inspection shell = test::inspect(watertight_proxy(open, flood_only()).mesh);
   EXPECT_LT(shell.signed_volume, 0.5 * ball);  // the flood alone: a thin shell of the surface
   const test::Inspection r = test::inspect(watertight_proxy(open).mesh);
   EXPECT_TRUE(r.every_edge_has_two_triangles && r.every_fan_is_one_cycle);
@@ -130,9 +135,7 @@ TEST(WatertightProxy, ADishAndASheetSeeOutAndStayThin) {
   // A spherical cap 0.4 deep and 1.6 wide: every point of its inside sees much of the sky, so
   // it stays the thin slab the flood alone gives (filled, it would hold about 0.44 more).
   const Mesh dish = sphere_cut_above(-0.6);
-  ProxyOptions flood_only;
-  flood_only.min_open = 0;
-  const double thin = test::inspect(watertight_proxy(dish, flood_only).mesh).signed_volume;
+  const double thin = test::inspect(watertight_proxy(dish, flood_only()).mesh).signed_volume;
   const test::Inspection r = test::inspect(watertight_proxy(dish).mesh);
   EXPECT_TRUE(r.every_edge_has_two_triangles && r.every_fan_is_one_cycle);
   EXPECT_LT(r.signed_volume, thin + 0.1);
