@@ -68,32 +68,31 @@ std::vector<std::uint8_t> open_directions(const DistanceField& field, double off
   const std::size_t n = field.distance.size();
   std::vector<std::uint8_t> count(n, 0);
   std::vector<char> sees(n, 0);
-  for (int dz = -1; dz <= 1; ++dz)
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        if (dx == 0 && dy == 0 && dz == 0) continue;
-        // The point one step on is visited first: walk each axis against the step. Every point
-        // is written before it is read, so `sees` needs no clearing between directions.
-        for (long zi = 0; zi < nz; ++zi) {
-          check_interrupt(stop);
-          const long z = dz > 0 ? nz - 1 - zi : zi;
-          for (long yi = 0; yi < ny; ++yi) {
-            const long y = dy > 0 ? ny - 1 - yi : yi;
-            for (long xi = 0; xi < nx; ++xi) {
-              const long x = dx > 0 ? nx - 1 - xi : xi;
-              const std::size_t k = std::size_t((z * ny + y) * nx + x);
-              if (!(double(field.distance[k]) > offset)) {
-                sees[k] = 0;
-                continue;
-              }
-              const long x2 = x + dx, y2 = y + dy, z2 = z + dz;
-              const bool past = x2 < 0 || y2 < 0 || z2 < 0 || x2 >= nx || y2 >= ny || z2 >= nz;
-              sees[k] = past || sees[std::size_t((z2 * ny + y2) * nx + x2)];
-              count[k] = std::uint8_t(count[k] + (sees[k] ? 1 : 0));
-            }
+  for (int d = 0; d < 27; ++d) {
+    const int dx = d % 3 - 1, dy = d / 3 % 3 - 1, dz = d / 9 - 1;
+    if (dx == 0 && dy == 0 && dz == 0) continue;
+    // The point one step on is visited first: walk each axis against the step. Every point is
+    // written before it is read, so `sees` needs no clearing between directions.
+    for (long zi = 0; zi < nz; ++zi) {
+      check_interrupt(stop);
+      const long z = dz > 0 ? nz - 1 - zi : zi;
+      for (long yi = 0; yi < ny; ++yi) {
+        const long y = dy > 0 ? ny - 1 - yi : yi;
+        for (long xi = 0; xi < nx; ++xi) {
+          const long x = dx > 0 ? nx - 1 - xi : xi;
+          const std::size_t k = std::size_t((z * ny + y) * nx + x);
+          if (!(double(field.distance[k]) > offset)) {
+            sees[k] = 0;
+            continue;
           }
+          const long x2 = x + dx, y2 = y + dy, z2 = z + dz;
+          const bool past = x2 < 0 || y2 < 0 || z2 < 0 || x2 >= nx || y2 >= ny || z2 >= nz;
+          sees[k] = past || sees[std::size_t((z2 * ny + y2) * nx + x2)];
+          count[k] = std::uint8_t(count[k] + (sees[k] ? 1 : 0));
         }
       }
+    }
+  }
   return count;
 }
 

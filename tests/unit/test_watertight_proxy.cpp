@@ -71,16 +71,17 @@ TEST(WatertightProxy, ASheetBecomesAThinClosedSlabAndAHoleIsClosed) {
   EXPECT_NEAR(surface_area(proxy), 4 * M_PI, 0.2 * 4 * M_PI);
 }
 
+Eigen::RowVector3d face_centre(const Mesh& m, Eigen::Index f) {
+  return (m.V.row(m.F(f, 0)) + m.V.row(m.F(f, 1)) + m.V.row(m.F(f, 2))) / 3.0;
+}
+
 // The unit sphere without the faces whose centre lies above z = `above`.
 Mesh sphere_cut_above(double above) {
   const Mesh whole = test::sphere(40, 60);
   Mesh cut = whole;
   Eigen::Index kept = 0;
-  for (Eigen::Index f = 0; f < whole.F.rows(); ++f) {
-    const double z =
-        (whole.V(whole.F(f, 0), 2) + whole.V(whole.F(f, 1), 2) + whole.V(whole.F(f, 2), 2)) / 3.0;
-    if (z <= above) cut.F.row(kept++) = whole.F.row(f);
-  }
+  for (Eigen::Index f = 0; f < whole.F.rows(); ++f)
+    if (face_centre(whole, f)[2] <= above) cut.F.row(kept++) = whole.F.row(f);
   cut.F.conservativeResize(kept, 3);
   return cut;
 }
@@ -104,10 +105,6 @@ TEST(WatertightProxy, AShapeWithAHoleWiderThanTheOffsetKeepsItsVolume) {
   EXPECT_EQ(r.euler(), 2);
   EXPECT_GT(r.signed_volume, 0.85 * ball);  // what saw out only through the hole is filled
   EXPECT_LT(r.signed_volume, 1.25 * ball);
-}
-
-Eigen::RowVector3d face_centre(const Mesh& m, Eigen::Index f) {
-  return (m.V.row(m.F(f, 0)) + m.V.row(m.F(f, 1)) + m.V.row(m.F(f, 2))) / 3.0;
 }
 
 TEST(WatertightProxy, WhatClosesAHoleTakesItsColourFromNearbyFaces) {
