@@ -1,5 +1,5 @@
 // A graph's part of matching, worked out once: only-neighbours, packed keys, parents of
-// neighbours, where intervals start, self sims and each level's order.
+// neighbours, sim keys, where intervals start, self sims and each level's order.
 #include "match/match_prep.hpp"
 
 #include <algorithm>
@@ -15,13 +15,20 @@ const MatchPrep::Sums* MatchPrep::sums(bool colour_counts) const {
 }
 
 void prepare_nodes(const ArgGraph& g, std::vector<std::array<int, 2>>& only,
-                   std::vector<MatchKey>& keys) {
-  // One pass: what both read lies in the first 64 bytes of a node's record.
+                   std::vector<MatchKey>& keys, std::vector<std::uint32_t>* child_begin) {
+  // One pass: what it reads lies in the first 64 bytes of a node's record.
   only.resize(g.nodes.size());
   keys.resize(g.nodes.size());
+  bool contiguous = true;
+  if (child_begin) child_begin->assign(g.nodes.size() + 1, 0);
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
     const ArgNode& n = g.nodes[i];
     keys[i] = {n.parent, n.interval, n.a, n.l, n.r, n.theta, n.phi};
+    if (child_begin) {
+      // Ranges must follow each other in node order; a gap or an overlap leaves no table.
+      contiguous &= n.child_begin == (*child_begin)[i];
+      (*child_begin)[i + 1] = n.child_begin + n.child_count;
+    }
     const std::uint32_t* adj = g.adjacency.data() + n.adj_begin;
     int found[2] = {-1, -1}, count[2] = {0, 0};
     for (std::uint32_t k = 0; k < n.adj_count; ++k) {
@@ -31,6 +38,31 @@ void prepare_nodes(const ArgGraph& g, std::vector<std::array<int, 2>>& only,
     for (int side = 0; side < 2; ++side)
       only[i][std::size_t(side)] = count[side] == 1 ? found[side] : -1;
   }
+  if (child_begin && !contiguous) child_begin->clear();
+}
+
+int prepare_branches(const std::vector<std::array<int, 2>>& only, std::vector<int>& branch) {
+  branch.resize(only.size());
+  int count = 0;
+  for (std::size_t i = 0; i < only.size(); ++i) {
+    // The neighbour below lies in a lower interval of the level, so at a lower index: its
+    // branch is known.
+    const int below = only[i][0];
+    const bool joins = below >= 0 && below < int(i) && only[std::size_t(below)][1] == int(i);
+    branch[i] = joins ? branch[std::size_t(below)] : count++;
+  }
+  return count;
+}
+
+bool children_in_order(const ArgGraph& g, const std::vector<std::uint32_t>& child_begin) {
+  const std::size_t n = g.nodes.size();
+  if (child_begin.size() != n + 1 || child_begin[n] != g.children.size()) return false;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::uint32_t c = child_begin[i] + 1; c < child_begin[i + 1]; ++c)
+      if (g.children[c - 1] >= g.children[c]) return false;
+  for (std::uint32_t c : g.children)
+    if (c >= n) return false;
+  return true;
 }
 
 void prepare_neighbour_parents(const ArgGraph& g, MatchPrep& out) {
@@ -56,6 +88,21 @@ void prepare_neighbour_parents(const ArgGraph& g, MatchPrep& out) {
     }
   }
   out.parent_begin[n] = std::uint32_t(out.parents.size());
+}
+
+void prepare_children(const ArgGraph& g, MatchPrep& out) {
+  const std::size_t n = g.nodes.size();
+  out.child_begin.resize(n + 1);
+  out.children.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    const ArgNode& node = g.nodes[i];
+    out.child_begin[i] = std::uint32_t(out.children.size());
+    out.children.insert(out.children.end(), g.children.begin() + std::ptrdiff_t(node.child_begin),
+                        g.children.begin() + std::ptrdiff_t(node.child_begin + node.child_count));
+    // In index order, as a scan of their interval meets them (the matcher's ties depend on it).
+    std::sort(out.children.begin() + out.child_begin[i], out.children.end());
+  }
+  out.child_begin[n] = std::uint32_t(out.children.size());
 }
 
 void prepare_interval_begin(const ArgGraph& g, int r, int* out) {
@@ -88,8 +135,12 @@ void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out,
 void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out) {
   out.weights = weights;
   out.level_begin = g.level_begin;
-  prepare_nodes(g, out.only, out.keys);
+  std::vector<std::array<int, 2>> only;
+  prepare_nodes(g, only, out.keys);
+  out.branches = prepare_branches(only, out.branch);
   prepare_neighbour_parents(g, out);
+  prepare_children(g, out);
+  make_sim_keys(g, out.sim_keys);
   out.interval_begin.resize(interval_offset(g.levels() + 1));
   for (int r = 0; r <= g.levels(); ++r)
     prepare_interval_begin(g, r, out.interval_begin.data() + interval_offset(r));
@@ -107,9 +158,11 @@ void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out) {
 
 bool prep_shape_fits(const MatchPrep* prep, const ArgGraph& g) {
   const std::size_t n = g.nodes.size();
-  return prep && prep->level_begin == g.level_begin && prep->only.size() == n &&
-         prep->parent_split.size() == n && prep->parent_begin.size() == n + 1 &&
-         prep->keys.size() == n && prep->plain.self.size() == n && prep->plain.order.size() == n &&
+  return prep && prep->level_begin == g.level_begin && prep->parent_split.size() == n &&
+         prep->parent_begin.size() == n + 1 && prep->child_begin.size() == n + 1 &&
+         prep->child_begin[n] == prep->children.size() && prep->keys.size() == n &&
+         prep->branch.size() == n && (prep->sim_keys.empty() || prep->sim_keys.size() == n) &&
+         prep->plain.self.size() == n && prep->plain.order.size() == n &&
          prep->interval_begin.size() == interval_offset(g.levels() + 1);
 }
 

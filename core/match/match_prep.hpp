@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "graph/arg_graph.hpp"
+#include "match/sim_key.hpp"
 #include "match/weights.hpp"
 
 namespace arg {
@@ -39,10 +40,13 @@ struct MatchPrep {
   };
   Weights weights;                         // as given to prepare_match (before the colour rule)
   std::vector<std::uint32_t> level_begin;  // the graph's level table, checked on use
-  // Per node: its only neighbour in the interval below ([0]) and above ([1]), -1 when it has
-  // none or several.
-  std::vector<std::array<int, 2>> only;
-  std::vector<MatchKey> keys;  // per node
+  std::vector<MatchKey> keys;              // per node
+  // Per node, its branch (prepare_branches): the nodes a match labels together.
+  std::vector<int> branch;
+  int branches = 0;
+  // Per node, what its group sims read (match/sim_key.hpp); empty when the graph's histograms
+  // are not byte codes (then the sims read its node records).
+  std::vector<SimKey> sim_keys;
   // Per level r, where each interval's nodes start (nodes of a level are sorted by interval):
   // interval_begin[interval_offset(r) + k] for k in 0 .. 2^r, the last being the level's end.
   std::vector<int> interval_begin;
@@ -51,6 +55,8 @@ struct MatchPrep {
   // parents[parent_begin[i], parent_split[i]) below, [parent_split[i], parent_begin[i + 1]) above.
   std::vector<std::uint32_t> parent_begin, parent_split;
   std::vector<int> parents;
+  // Per node, its children in index order: children[child_begin[i], child_begin[i + 1]).
+  std::vector<std::uint32_t> child_begin, children;
   Sums plain;     // lambda_4 = 0: when either graph has no colour
   Sums coloured;  // the weights' lambda_4: filled when the graph has colour and lambda_4 != 0
 
@@ -69,10 +75,19 @@ bool prep_shape_fits(const MatchPrep* prep, const ArgGraph& g);
 bool prep_fits(const MatchPrep* prep, const ArgGraph& g, const Weights& weights);
 
 // Its parts one by one (match_graphs' own path when it gets no prep); `w` is the effective
-// weights. prepare_nodes fills the only-neighbours and the keys.
+// weights. prepare_nodes fills the only-neighbours and the keys, and `child_begin` (optional)
+// with where each node's children start in g.children (n + 1 entries).
 void prepare_nodes(const ArgGraph& g, std::vector<std::array<int, 2>>& only,
-                   std::vector<MatchKey>& keys);
+                   std::vector<MatchKey>& keys, std::vector<std::uint32_t>* child_begin = nullptr);
+// Numbers the branches: chains of nodes each the only neighbour of the next in its own
+// direction (Hilaga's branch, labelled as one by a match). Returns how many; `branch` gets
+// each node's, numbered from 0 in the order of their first nodes.
+int prepare_branches(const std::vector<std::array<int, 2>>& only, std::vector<int>& branch);
+// Whether g.children lists each node's children, from `child_begin` (prepare_nodes'), in index
+// order: graphs built or read from format 3 do; other values are checked, not trusted.
+bool children_in_order(const ArgGraph& g, const std::vector<std::uint32_t>& child_begin);
 void prepare_neighbour_parents(const ArgGraph& g, MatchPrep& out);
+void prepare_children(const ArgGraph& g, MatchPrep& out);
 // Level r's part of interval_begin (2^r + 1 entries from `out`).
 void prepare_interval_begin(const ArgGraph& g, int r, int* out);
 // `keyed` (optional) is scratch space kept by a caller that prepares many graphs.

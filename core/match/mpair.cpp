@@ -8,6 +8,7 @@
 
 #include "match/match_prep.hpp"
 #include "match/node_similarity.hpp"
+#include "match/sim_key.hpp"
 
 namespace arg {
 
@@ -17,47 +18,51 @@ namespace {
 struct Side {
   const ArgGraph* g = nullptr;
   std::vector<int> group;  // per node: match group, -1 when unmatched
-  std::vector<int> label;  // per node: branch label at its level, 0 when none
-  // Per node: its only neighbour in the interval below (index 0) and above (1), -1 when it
-  // has none or several; branches are walked along them many times. From the graph's
-  // MatchPrep when it has one, else worked out into `own_only`.
-  const std::array<int, 2>* only = nullptr;
+  // Per branch (a chain of only-neighbours, labelled as one): its label, 0 when none.
+  std::vector<int> branch_label;
+  const int* branch = nullptr;  // per node, its branch
+  std::vector<int> own_branch;
+  // Per node: its only neighbour in the interval below and above (when there is no MatchPrep,
+  // for the branches).
   std::vector<std::array<int, 2>> own_only;
-  const MatchKey* key = nullptr;  // per node, likewise
+  const MatchKey* key = nullptr;  // per node, from the MatchPrep or worked out
   std::vector<MatchKey> own_keys;
+  const SimKey* sim = nullptr;  // per node, when its MatchPrep has them
+  // Per node, its children in index order: children[child_begin[i], child_begin[i + 1]);
+  // nullptr when a graph's lists are not in index order (the candidate scan then reads whole
+  // intervals).
+  const std::uint32_t* child_begin = nullptr;
+  const std::uint32_t* children = nullptr;
+  std::vector<std::uint32_t> own_child_begin;
   const MatchPrep* prep = nullptr;  // its parents of neighbours, when it has a MatchPrep
 
   void reset(const ArgGraph& graph, const MatchPrep* given) {
     g = &graph;
     group.assign(graph.nodes.size(), -1);
-    label.assign(graph.nodes.size(), 0);
     prep = prep_shape_fits(given, graph) ? given : nullptr;
     if (prep) {
-      only = prep->only.data();
       key = prep->keys.data();
+      sim = prep->sim_keys.empty() ? nullptr : prep->sim_keys.data();
+      child_begin = prep->child_begin.data();
+      children = prep->children.data();
+      branch = prep->branch.data();
+      branch_label.assign(std::size_t(prep->branches), 0);
     } else {
-      prepare_nodes(graph, own_only, own_keys);
-      only = own_only.data();
+      prepare_nodes(graph, own_only, own_keys, &own_child_begin);
       key = own_keys.data();
+      sim = nullptr;
+      const bool ordered = children_in_order(graph, own_child_begin);
+      child_begin = ordered ? own_child_begin.data() : nullptr;
+      children = ordered ? graph.children.data() : nullptr;
+      branch_label.assign(std::size_t(prepare_branches(own_only, own_branch)), 0);
+      branch = own_branch.data();
     }
   }
   const ArgNode& node(int i) const { return g->nodes[std::size_t(i)]; }
 
-  // The neighbour in the interval interval(i) + step (step = +1 or -1) when there is exactly
-  // one, else -1.
-  int only_neighbour(int i, int step) const { return only[std::size_t(i)][step > 0 ? 1 : 0]; }
-
-  // Labels the branch through i: neighbours up and down while the chain does not fork.
-  void label_branch(int i, int value) {
-    label[std::size_t(i)] = value;
-    for (int step : {+1, -1}) {
-      int cur = i;
-      for (int next; (next = only_neighbour(cur, step)) >= 0; cur = next) {
-        if (only_neighbour(next, -step) != cur || label[std::size_t(next)] != 0) break;
-        label[std::size_t(next)] = value;
-      }
-    }
-  }
+  int label(int i) const { return branch_label[std::size_t(branch[i])]; }
+  // Labels the branch through i: its chain of neighbours up and down while it does not fork.
+  void label_branch(int i, int value) { branch_label[std::size_t(branch[i])] = value; }
 
   int parent_group(int i) const {
     int p = key[i].parent;
@@ -161,9 +166,18 @@ struct Scratch {
   return s;
 }
 
+// node_sim of X's node m and Y's node n, from their sim keys when both sides have them (the
+// same bits; a key is one cache line, a node record four).
+double pair_sim(const Side& X, int m, const Side& Y, int n, const Weights& w) {
+  if (!X.sim || !Y.sim) return node_sim(X.node(m), Y.node(n), w);
+  double s = key_sim(X.sim[m], Y.sim[n], w);
+  if (w.lambda_4 > 0) s += w.lambda_4 * histogram_min(X.node(m).colour, Y.node(n).colour) / 3.0;
+  return s;
+}
+
 bool candidate(const Side& X, const Side& Y, int m, int n, int parent_group_m) {
   return Y.group[std::size_t(n)] < 0 && parent_group_m == Y.parent_group(n) &&
-         X.label[std::size_t(m)] == Y.label[std::size_t(n)];
+         X.label(m) == Y.label(n);
 }
 
 // Unmatched nodes of `side` whose parent is matched join a group founded at this level by a
@@ -238,33 +252,42 @@ double match_graphs(const ArgGraph& gx, const MatchPrep* px, const ArgGraph& gy,
       const int pg = X.parent_group(m);
       if (pg == -1) continue;  // parent unmatched: the subtree stays unmatched
       const MatchKey& km = X.key[m];
-      const ArgNode& nm = gx.nodes[std::size_t(m)];
       int best = -1;
       double best_loss = 0, best_sim = -1;
-      // Only Y's nodes of m's interval can be candidates.
-      const int y_end = y_interval_begin[km.interval + 1];
-      for (int n = y_interval_begin[km.interval]; n < y_end; ++n) {
-        if (!candidate(X, Y, m, n, pg)) continue;
-        if (w.tung_rule && !neighbours_agree(s.x_parents.of(X, m), s.y_parents.of(Y, n))) continue;
+      auto consider = [&](int n) {
+        if (!candidate(X, Y, m, n, pg)) return;
+        if (w.tung_rule && !neighbours_agree(s.x_parents.of(X, m), s.y_parents.of(Y, n))) return;
         const double loss = node_loss(km, Y.key[n], gx.levels(), w);
-        if (best >= 0 && loss > best_loss) continue;
+        if (best >= 0 && loss > best_loss) return;
         // Equal losses are settled by the larger sim, computed only then.
         if (best >= 0 && loss == best_loss) {
-          if (best_sim < 0) best_sim = node_sim(nm, gy.nodes[std::size_t(best)], w);
-          const double sim = node_sim(nm, gy.nodes[std::size_t(n)], w);
-          if (sim <= best_sim) continue;
+          if (best_sim < 0) best_sim = pair_sim(X, m, Y, best, w);
+          const double sim = pair_sim(X, m, Y, n, w);
+          if (sim <= best_sim) return;
           best_sim = sim;
         } else {
           best_sim = -1;
         }
         best = n, best_loss = loss;
+      };
+      if (pg >= 0 && Y.children && !w.groups) {
+        // A candidate's parent is the one node of Y in m's parent's group (groups of several
+        // nodes need w.groups): its children in m's interval, in index order, are the
+        // interval's candidates as a scan of the whole interval would meet them.
+        const int parent = s.groups[std::size_t(pg)].y;
+        for (std::uint32_t c = Y.child_begin[parent]; c < Y.child_begin[parent + 1]; ++c)
+          if (Y.key[Y.children[c]].interval == km.interval) consider(int(Y.children[c]));
+      } else {
+        // Only Y's nodes of m's interval can be candidates.
+        const int y_end = y_interval_begin[km.interval + 1];
+        for (int n = y_interval_begin[km.interval]; n < y_end; ++n) consider(n);
       }
       if (best < 0) continue;
       const int gid = int(s.groups.size());
       s.groups.push_back({r, m, best, best_loss});
       X.group[std::size_t(m)] = gid;
       Y.group[std::size_t(best)] = gid;
-      if (X.label[std::size_t(m)] == 0) {
+      if (X.label(m) == 0) {
         X.label_branch(m, next_label);
         Y.label_branch(best, next_label);
         ++next_label;
@@ -288,7 +311,7 @@ double match_graphs(const ArgGraph& gx, const MatchPrep* px, const ArgGraph& gy,
       if (any_extra)
         for (auto& e : s.extra_y) grown |= e.first == k;
       if (!grown) {
-        sim = node_sim(gx.nodes[std::size_t(g.x)], gy.nodes[std::size_t(g.y)], w);
+        sim = pair_sim(X, g.x, Y, g.y, w);
       } else {
         NodeMass mx, my;
         mx.add(gx.nodes[std::size_t(g.x)]), my.add(gy.nodes[std::size_t(g.y)]);

@@ -38,7 +38,8 @@ double node_sim(const ArgNode& m, const ArgNode& n, const Weights& w);
 // theta and phi (over pi); L1 or squared differences per the weights. `m` and `n` are nodes or
 // anything with their float fields a, l, r, theta and phi (match/match_prep.hpp's MatchKey).
 template <class M, class N>
-double node_loss(const M& m, const N& n, int levels, const Weights& w) {
+[[gnu::always_inline]] inline double node_loss(const M& m, const N& n, int levels,
+                                               const Weights& w) {
   const double per_level = levels + 1.0;
   const double d[5] = {
       (double(m.a) - n.a) * per_level,

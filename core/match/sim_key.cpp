@@ -1,0 +1,72 @@
+// Packing nodes into sim keys, and the group sim read from them.
+#include "match/sim_key.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace arg {
+
+namespace {
+
+// Codes of `count` bins under `step`, when each bin is exactly float(code) * step.
+bool codes_of(const float* bins, std::size_t count, float step, std::uint8_t* out) {
+  for (std::size_t k = 0; k < count; ++k) {
+    const float q = step > 0 ? std::nearbyint(bins[k] / step) : 0.0f;
+    if (!(q >= 0.0f && q <= 255.0f)) return false;
+    out[k] = std::uint8_t(q);
+    const float back = float(out[k]) * step;
+    if (std::memcmp(&back, &bins[k], sizeof back) != 0) return false;
+  }
+  return true;
+}
+
+// histogram_min over codes: the same float bins and the same sum. Its order does not matter:
+// a nonzero minimum lies between min(sx, sy) (codes of 1) and 255 min(sx, sy), so every term's
+// 24-bit significand falls within 33 bits of the largest term's scale, and the sum of eight is
+// exact in a double whatever the order. Four running sums let the compiler use vector lanes.
+template <std::size_t N>
+double codes_min(const std::uint8_t* x, float sx, const std::uint8_t* y, float sy) {
+  double part[4] = {0, 0, 0, 0};
+  for (std::size_t k = 0; k < N; k += 4)
+    for (std::size_t q = 0; q < 4; ++q) {
+      const float bx = float(x[k + q]) * sx, by = float(y[k + q]) * sy;
+      part[q] += bx < by ? bx : by;
+    }
+  return (part[0] + part[1]) + (part[2] + part[3]);
+}
+
+}  // namespace
+
+bool make_sim_keys(const ArgGraph& g, std::vector<SimKey>& out) {
+  out.resize(g.nodes.size());
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    const ArgNode& n = g.nodes[i];
+    SimKey& k = out[i];
+    k.a = n.a, k.l = n.l, k.v = n.v, k.step = n.a / 255.0f;  // as bins_values computes it
+    std::uint8_t* code = k.code.data();
+    if (!codes_of(n.cords.data(), kCordBins, k.step, code) ||
+        !codes_of(n.curv_mean.data(), kCurvatureBins, k.step, code + kCordBins) ||
+        !codes_of(n.curv_gauss.data(), kCurvatureBins, k.step, code + kCordBins + kCurvatureBins)) {
+      out.clear();
+      return false;
+    }
+  }
+  return true;
+}
+
+double key_sim(const SimKey& m, const SimKey& n, const Weights& w) {
+  // The terms of node_similarity.cpp's sim_terms, in its order.
+  double s = w.alpha_s * double(std::min(m.a, n.a)) + w.beta_s * double(std::min(m.l, n.l));
+  if (w.lambda_1 > 0) s += w.lambda_1 * double(std::min(m.v, n.v));
+  const std::uint8_t *x = m.code.data(), *y = n.code.data();
+  if (w.lambda_2 > 0) s += w.lambda_2 * codes_min<kCordBins>(x, m.step, y, n.step);
+  if (w.lambda_3 > 0)
+    s += w.lambda_3 * 0.5 *
+         (codes_min<kCurvatureBins>(x + kCordBins, m.step, y + kCordBins, n.step) +
+          codes_min<kCurvatureBins>(x + kCordBins + kCurvatureBins, m.step,
+                                    y + kCordBins + kCurvatureBins, n.step));
+  return s;
+}
+
+}  // namespace arg
