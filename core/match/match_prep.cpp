@@ -41,17 +41,33 @@ void prepare_nodes(const ArgGraph& g, std::vector<std::array<int, 2>>& only,
   if (child_begin && !contiguous) child_begin->clear();
 }
 
-int prepare_branches(const std::vector<std::array<int, 2>>& only, std::vector<int>& branch) {
-  branch.resize(only.size());
+int prepare_branches(const std::vector<std::array<int, 2>>& only, std::vector<MatchKey>& keys) {
   int count = 0;
   for (std::size_t i = 0; i < only.size(); ++i) {
     // The neighbour below lies in a lower interval of the level, so at a lower index: its
     // branch is known.
     const int below = only[i][0];
     const bool joins = below >= 0 && below < int(i) && only[std::size_t(below)][1] == int(i);
-    branch[i] = joins ? branch[std::size_t(below)] : count++;
+    keys[i].branch = joins ? keys[std::size_t(below)].branch : count++;
   }
   return count;
+}
+
+bool prepare_child_halves(const MatchKey* keys, std::size_t n, const std::uint32_t* child_begin,
+                          const std::uint32_t* children, std::vector<std::uint32_t>& mid) {
+  mid.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t end = child_begin[i + 1];
+    mid[i] = end;
+    for (std::uint32_t c = child_begin[i]; c < end; ++c) {
+      const std::uint32_t interval = keys[children[c]].interval;
+      if (interval >> 1 != keys[i].interval) return false;
+      const bool upper = (interval & 1) != 0;
+      if (upper && mid[i] == end) mid[i] = c;
+      if (!upper && mid[i] != end) return false;  // a lower child after an upper one
+    }
+  }
+  return true;
 }
 
 bool children_in_order(const ArgGraph& g, const std::vector<std::uint32_t>& child_begin) {
@@ -137,9 +153,13 @@ void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out) {
   out.level_begin = g.level_begin;
   std::vector<std::array<int, 2>> only;
   prepare_nodes(g, only, out.keys);
-  out.branches = prepare_branches(only, out.branch);
+  out.branches = prepare_branches(only, out.keys);
   prepare_neighbour_parents(g, out);
   prepare_children(g, out);
+  if (!prepare_child_halves(out.keys.data(), out.keys.size(), out.child_begin.data(),
+                            out.children.data(), out.child_mid)) {
+    out.child_begin.clear(), out.child_mid.clear(), out.children.clear();
+  }
   make_sim_keys(g, out.sim_keys);
   out.interval_begin.resize(interval_offset(g.levels() + 1));
   for (int r = 0; r <= g.levels(); ++r)
@@ -159,10 +179,12 @@ void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out) {
 bool prep_shape_fits(const MatchPrep* prep, const ArgGraph& g) {
   const std::size_t n = g.nodes.size();
   return prep && prep->level_begin == g.level_begin && prep->parent_split.size() == n &&
-         prep->parent_begin.size() == n + 1 && prep->child_begin.size() == n + 1 &&
-         prep->child_begin[n] == prep->children.size() && prep->keys.size() == n &&
-         prep->branch.size() == n && (prep->sim_keys.empty() || prep->sim_keys.size() == n) &&
-         prep->plain.self.size() == n && prep->plain.order.size() == n &&
+         prep->parent_begin.size() == n + 1 && prep->keys.size() == n &&
+         (prep->child_begin.empty() ||
+          (prep->child_begin.size() == n + 1 && prep->child_mid.size() == n &&
+           prep->child_begin[n] == prep->children.size())) &&
+         (prep->sim_keys.empty() || prep->sim_keys.size() == n) && prep->plain.self.size() == n &&
+         prep->plain.order.size() == n &&
          prep->interval_begin.size() == interval_offset(g.levels() + 1);
 }
 

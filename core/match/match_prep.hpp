@@ -19,7 +19,9 @@ struct MatchKey {
   std::int32_t parent = -1;
   std::uint32_t interval = 0;
   float a = 0, l = 0, r = 0, theta = 0, phi = 0;  // the loss's attributes (node_loss)
+  std::int32_t branch = 0;  // its branch (prepare_branches): the nodes a match labels together
 };
+static_assert(sizeof(MatchKey) == 32, "two keys a cache line");
 
 // Where level r's entries start in MatchPrep::interval_begin: 2^r + 1 entries a level.
 inline std::size_t interval_offset(int r) {
@@ -41,9 +43,7 @@ struct MatchPrep {
   Weights weights;                         // as given to prepare_match (before the colour rule)
   std::vector<std::uint32_t> level_begin;  // the graph's level table, checked on use
   std::vector<MatchKey> keys;              // per node
-  // Per node, its branch (prepare_branches): the nodes a match labels together.
-  std::vector<int> branch;
-  int branches = 0;
+  int branches = 0;                        // how many (MatchKey::branch)
   // Per node, what its group sims read (match/sim_key.hpp); empty when the graph's histograms
   // are not byte codes (then the sims read its node records).
   std::vector<SimKey> sim_keys;
@@ -55,8 +55,10 @@ struct MatchPrep {
   // parents[parent_begin[i], parent_split[i]) below, [parent_split[i], parent_begin[i + 1]) above.
   std::vector<std::uint32_t> parent_begin, parent_split;
   std::vector<int> parents;
-  // Per node, its children in index order: children[child_begin[i], child_begin[i + 1]).
-  std::vector<std::uint32_t> child_begin, children;
+  // Per node, its children in index order: children[child_begin[i], child_begin[i + 1]), those
+  // in the upper half of its interval from child_mid[i] (prepare_child_halves); all three
+  // empty when a child lies in neither half (the candidate scan then reads whole intervals).
+  std::vector<std::uint32_t> child_begin, child_mid, children;
   Sums plain;     // lambda_4 = 0: when either graph has no colour
   Sums coloured;  // the weights' lambda_4: filled when the graph has colour and lambda_4 != 0
 
@@ -80,9 +82,14 @@ bool prep_fits(const MatchPrep* prep, const ArgGraph& g, const Weights& weights)
 void prepare_nodes(const ArgGraph& g, std::vector<std::array<int, 2>>& only,
                    std::vector<MatchKey>& keys, std::vector<std::uint32_t>* child_begin = nullptr);
 // Numbers the branches: chains of nodes each the only neighbour of the next in its own
-// direction (Hilaga's branch, labelled as one by a match). Returns how many; `branch` gets
-// each node's, numbered from 0 in the order of their first nodes.
-int prepare_branches(const std::vector<std::array<int, 2>>& only, std::vector<int>& branch);
+// direction (Hilaga's branch, labelled as one by a match). Returns how many; each key's branch
+// gets its node's, numbered from 0 in the order of their first nodes.
+int prepare_branches(const std::vector<std::array<int, 2>>& only, std::vector<MatchKey>& keys);
+// Where each node's children in the upper half of its interval start (n entries), when every
+// child of node i lies in interval 2 interval(i) or 2 interval(i) + 1, the lower half first;
+// returns false (and `mid` unspecified) otherwise.
+bool prepare_child_halves(const MatchKey* keys, std::size_t n, const std::uint32_t* child_begin,
+                          const std::uint32_t* children, std::vector<std::uint32_t>& mid);
 // Whether g.children lists each node's children, from `child_begin` (prepare_nodes'), in index
 // order: graphs built or read from format 3 do; other values are checked, not trusted.
 bool children_in_order(const ArgGraph& g, const std::vector<std::uint32_t>& child_begin);

@@ -20,20 +20,19 @@ struct Side {
   std::vector<int> group;  // per node: match group, -1 when unmatched
   // Per branch (a chain of only-neighbours, labelled as one): its label, 0 when none.
   std::vector<int> branch_label;
-  const int* branch = nullptr;  // per node, its branch
-  std::vector<int> own_branch;
   // Per node: its only neighbour in the interval below and above (when there is no MatchPrep,
   // for the branches).
   std::vector<std::array<int, 2>> own_only;
   const MatchKey* key = nullptr;  // per node, from the MatchPrep or worked out
   std::vector<MatchKey> own_keys;
   const SimKey* sim = nullptr;  // per node, when its MatchPrep has them
-  // Per node, its children in index order: children[child_begin[i], child_begin[i + 1]);
-  // nullptr when a graph's lists are not in index order (the candidate scan then reads whole
-  // intervals).
+  // Per node, its children in index order: children[child_begin[i], child_begin[i + 1]), the
+  // upper half of its interval's from child_mid[i]; nullptr when a graph's lists are not in
+  // index order or not in halves (the candidate scan then reads whole intervals).
   const std::uint32_t* child_begin = nullptr;
+  const std::uint32_t* child_mid = nullptr;
   const std::uint32_t* children = nullptr;
-  std::vector<std::uint32_t> own_child_begin;
+  std::vector<std::uint32_t> own_child_begin, own_child_mid;
   const MatchPrep* prep = nullptr;  // its parents of neighbours, when it has a MatchPrep
 
   void reset(const ArgGraph& graph, const MatchPrep* given) {
@@ -43,26 +42,29 @@ struct Side {
     if (prep) {
       key = prep->keys.data();
       sim = prep->sim_keys.empty() ? nullptr : prep->sim_keys.data();
-      child_begin = prep->child_begin.data();
-      children = prep->children.data();
-      branch = prep->branch.data();
+      const bool halved = !prep->child_begin.empty();
+      child_begin = halved ? prep->child_begin.data() : nullptr;
+      child_mid = halved ? prep->child_mid.data() : nullptr;
+      children = halved ? prep->children.data() : nullptr;
       branch_label.assign(std::size_t(prep->branches), 0);
     } else {
       prepare_nodes(graph, own_only, own_keys, &own_child_begin);
       key = own_keys.data();
       sim = nullptr;
-      const bool ordered = children_in_order(graph, own_child_begin);
-      child_begin = ordered ? own_child_begin.data() : nullptr;
-      children = ordered ? graph.children.data() : nullptr;
-      branch_label.assign(std::size_t(prepare_branches(own_only, own_branch)), 0);
-      branch = own_branch.data();
+      const bool halved = children_in_order(graph, own_child_begin) &&
+                          prepare_child_halves(key, own_keys.size(), own_child_begin.data(),
+                                               graph.children.data(), own_child_mid);
+      child_begin = halved ? own_child_begin.data() : nullptr;
+      child_mid = halved ? own_child_mid.data() : nullptr;
+      children = halved ? graph.children.data() : nullptr;
+      branch_label.assign(std::size_t(prepare_branches(own_only, own_keys)), 0);
     }
   }
   const ArgNode& node(int i) const { return g->nodes[std::size_t(i)]; }
 
-  int label(int i) const { return branch_label[std::size_t(branch[i])]; }
+  int label(int i) const { return branch_label[std::size_t(key[i].branch)]; }
   // Labels the branch through i: its chain of neighbours up and down while it does not fork.
-  void label_branch(int i, int value) { branch_label[std::size_t(branch[i])] = value; }
+  void label_branch(int i, int value) { branch_label[std::size_t(key[i].branch)] = value; }
 
   int parent_group(int i) const {
     int p = key[i].parent;
@@ -270,13 +272,16 @@ double match_graphs(const ArgGraph& gx, const MatchPrep* px, const ArgGraph& gy,
         }
         best = n, best_loss = loss;
       };
-      if (pg >= 0 && Y.children && !w.groups) {
+      if (pg >= 0 && X.children && Y.children && !w.groups) {
         // A candidate's parent is the one node of Y in m's parent's group (groups of several
         // nodes need w.groups): its children in m's interval, in index order, are the
-        // interval's candidates as a scan of the whole interval would meet them.
+        // interval's candidates as a scan of the whole interval would meet them. m lies in a
+        // half of its parent's interval (X's children are in halves), which is Y's parent's.
         const int parent = s.groups[std::size_t(pg)].y;
-        for (std::uint32_t c = Y.child_begin[parent]; c < Y.child_begin[parent + 1]; ++c)
-          if (Y.key[Y.children[c]].interval == km.interval) consider(int(Y.children[c]));
+        const bool upper = (km.interval & 1) != 0;
+        const std::uint32_t from = upper ? Y.child_mid[parent] : Y.child_begin[parent];
+        const std::uint32_t to = upper ? Y.child_begin[parent + 1] : Y.child_mid[parent];
+        for (std::uint32_t c = from; c < to; ++c) consider(int(Y.children[c]));
       } else {
         // Only Y's nodes of m's interval can be candidates.
         const int y_end = y_interval_begin[km.interval + 1];

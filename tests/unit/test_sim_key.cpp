@@ -85,6 +85,7 @@ TEST(SimKey, MatchingWithKeysAndChildrenGivesTheSamePairsAndSim) {
     for (std::size_t i = 0; i < preps.size(); ++i) {
       prepare_match(stored_graphs()[i], w, preps[i]);
       ASSERT_EQ(preps[i].sim_keys.size(), stored_graphs()[i].nodes.size());
+      ASSERT_EQ(preps[i].child_mid.size(), stored_graphs()[i].nodes.size());  // in halves
     }
     for (std::size_t i = 0; i < preps.size(); ++i)
       for (std::size_t j = 0; j < preps.size(); ++j) {
@@ -103,7 +104,7 @@ TEST(SimKey, MatchingWithKeysAndChildrenGivesTheSamePairsAndSim) {
   }
 }
 
-TEST(SimKey, PreparedChildrenAreEachNodesChildrenInIndexOrder) {
+TEST(SimKey, PreparedChildrenAreEachNodesChildrenInIndexOrderAndInHalves) {
   const ArgGraph& g = stored_graphs()[3];
   MatchPrep prep;
   prepare_match(g, weights_preset("arg"), prep);
@@ -117,6 +118,10 @@ TEST(SimKey, PreparedChildrenAreEachNodesChildrenInIndexOrder) {
                                          prep.children.begin() + prep.child_begin[i + 1]);
     EXPECT_EQ(got, expected) << i;
     total += expected.size();
+    // Children in the lower half of i's interval, then those in the upper half.
+    for (std::uint32_t c = prep.child_begin[i]; c < prep.child_begin[i + 1]; ++c)
+      EXPECT_EQ(g.nodes[prep.children[c]].interval,
+                2 * g.nodes[i].interval + (c >= prep.child_mid[i] ? 1 : 0));
   }
   EXPECT_EQ(prep.children.size(), total);
 }
