@@ -1,10 +1,12 @@
-// A graph's part of matching, worked out once: only-neighbours, packed keys, parents of
-// neighbours, sim keys, where intervals start, self sims and each level's order.
+// A graph's part of matching, worked out once: packed keys with their branches, parents of
+// neighbours, children in halves, sim keys, where intervals start, self sims and each level's
+// order.
 #include "match/match_prep.hpp"
 
 #include <algorithm>
 #include <utility>
 
+#include "match/child_halves.hpp"
 #include "match/mpair.hpp"
 
 namespace arg {
@@ -15,20 +17,13 @@ const MatchPrep::Sums* MatchPrep::sums(bool colour_counts) const {
 }
 
 void prepare_nodes(const ArgGraph& g, std::vector<std::array<int, 2>>& only,
-                   std::vector<MatchKey>& keys, std::vector<std::uint32_t>* child_begin) {
+                   std::vector<MatchKey>& keys) {
   // One pass: what it reads lies in the first 64 bytes of a node's record.
   only.resize(g.nodes.size());
   keys.resize(g.nodes.size());
-  bool contiguous = true;
-  if (child_begin) child_begin->assign(g.nodes.size() + 1, 0);
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
     const ArgNode& n = g.nodes[i];
     keys[i] = {n.parent, n.interval, n.a, n.l, n.r, n.theta, n.phi};
-    if (child_begin) {
-      // Ranges must follow each other in node order; a gap or an overlap leaves no table.
-      contiguous &= n.child_begin == (*child_begin)[i];
-      (*child_begin)[i + 1] = n.child_begin + n.child_count;
-    }
     const std::uint32_t* adj = g.adjacency.data() + n.adj_begin;
     int found[2] = {-1, -1}, count[2] = {0, 0};
     for (std::uint32_t k = 0; k < n.adj_count; ++k) {
@@ -38,7 +33,6 @@ void prepare_nodes(const ArgGraph& g, std::vector<std::array<int, 2>>& only,
     for (int side = 0; side < 2; ++side)
       only[i][std::size_t(side)] = count[side] == 1 ? found[side] : -1;
   }
-  if (child_begin && !contiguous) child_begin->clear();
 }
 
 int prepare_branches(const std::vector<std::array<int, 2>>& only, std::vector<MatchKey>& keys) {
@@ -51,34 +45,6 @@ int prepare_branches(const std::vector<std::array<int, 2>>& only, std::vector<Ma
     keys[i].branch = joins ? keys[std::size_t(below)].branch : count++;
   }
   return count;
-}
-
-bool prepare_child_halves(const MatchKey* keys, std::size_t n, const std::uint32_t* child_begin,
-                          const std::uint32_t* children, std::vector<std::uint32_t>& mid) {
-  mid.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t end = child_begin[i + 1];
-    mid[i] = end;
-    for (std::uint32_t c = child_begin[i]; c < end; ++c) {
-      const std::uint32_t interval = keys[children[c]].interval;
-      if (interval >> 1 != keys[i].interval) return false;
-      const bool upper = (interval & 1) != 0;
-      if (upper && mid[i] == end) mid[i] = c;
-      if (!upper && mid[i] != end) return false;  // a lower child after an upper one
-    }
-  }
-  return true;
-}
-
-bool children_in_order(const ArgGraph& g, const std::vector<std::uint32_t>& child_begin) {
-  const std::size_t n = g.nodes.size();
-  if (child_begin.size() != n + 1 || child_begin[n] != g.children.size()) return false;
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::uint32_t c = child_begin[i] + 1; c < child_begin[i + 1]; ++c)
-      if (g.children[c - 1] >= g.children[c]) return false;
-  for (std::uint32_t c : g.children)
-    if (c >= n) return false;
-  return true;
 }
 
 void prepare_neighbour_parents(const ArgGraph& g, MatchPrep& out) {
@@ -104,21 +70,6 @@ void prepare_neighbour_parents(const ArgGraph& g, MatchPrep& out) {
     }
   }
   out.parent_begin[n] = std::uint32_t(out.parents.size());
-}
-
-void prepare_children(const ArgGraph& g, MatchPrep& out) {
-  const std::size_t n = g.nodes.size();
-  out.child_begin.resize(n + 1);
-  out.children.clear();
-  for (std::size_t i = 0; i < n; ++i) {
-    const ArgNode& node = g.nodes[i];
-    out.child_begin[i] = std::uint32_t(out.children.size());
-    out.children.insert(out.children.end(), g.children.begin() + std::ptrdiff_t(node.child_begin),
-                        g.children.begin() + std::ptrdiff_t(node.child_begin + node.child_count));
-    // In index order, as a scan of their interval meets them (the matcher's ties depend on it).
-    std::sort(out.children.begin() + out.child_begin[i], out.children.end());
-  }
-  out.child_begin[n] = std::uint32_t(out.children.size());
 }
 
 void prepare_interval_begin(const ArgGraph& g, int r, int* out) {
@@ -155,11 +106,7 @@ void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out) {
   prepare_nodes(g, only, out.keys);
   out.branches = prepare_branches(only, out.keys);
   prepare_neighbour_parents(g, out);
-  prepare_children(g, out);
-  if (!prepare_child_halves(out.keys.data(), out.keys.size(), out.child_begin.data(),
-                            out.children.data(), out.child_mid)) {
-    out.child_begin.clear(), out.child_mid.clear(), out.children.clear();
-  }
+  prepare_child_halves(g, out.keys, out.child_begin, out.child_mid, out.children);
   make_sim_keys(g, out.sim_keys);
   out.interval_begin.resize(interval_offset(g.levels() + 1));
   for (int r = 0; r <= g.levels(); ++r)

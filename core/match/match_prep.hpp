@@ -21,7 +21,7 @@ struct MatchKey {
   float a = 0, l = 0, r = 0, theta = 0, phi = 0;  // the loss's attributes (node_loss)
   std::int32_t branch = 0;  // its branch (prepare_branches): the nodes a match labels together
 };
-static_assert(sizeof(MatchKey) == 32, "two keys a cache line");
+static_assert(sizeof(MatchKey) == 32, "a key is an eighth of a node record");
 
 // Where level r's entries start in MatchPrep::interval_begin: 2^r + 1 entries a level.
 inline std::size_t interval_offset(int r) {
@@ -56,7 +56,7 @@ struct MatchPrep {
   std::vector<std::uint32_t> parent_begin, parent_split;
   std::vector<int> parents;
   // Per node, its children in index order: children[child_begin[i], child_begin[i + 1]), those
-  // in the upper half of its interval from child_mid[i] (prepare_child_halves); all three
+  // in the upper half of its interval from child_mid[i] (match/child_halves.hpp); all three
   // empty when a child lies in neither half (the candidate scan then reads whole intervals).
   std::vector<std::uint32_t> child_begin, child_mid, children;
   Sums plain;     // lambda_4 = 0: when either graph has no colour
@@ -77,24 +77,15 @@ bool prep_shape_fits(const MatchPrep* prep, const ArgGraph& g);
 bool prep_fits(const MatchPrep* prep, const ArgGraph& g, const Weights& weights);
 
 // Its parts one by one (match_graphs' own path when it gets no prep); `w` is the effective
-// weights. prepare_nodes fills the only-neighbours and the keys, and `child_begin` (optional)
-// with where each node's children start in g.children (n + 1 entries).
+// weights. prepare_nodes fills the only-neighbours and the keys (their branch is
+// prepare_branches'); match/child_halves.hpp fills the children.
 void prepare_nodes(const ArgGraph& g, std::vector<std::array<int, 2>>& only,
-                   std::vector<MatchKey>& keys, std::vector<std::uint32_t>* child_begin = nullptr);
+                   std::vector<MatchKey>& keys);
 // Numbers the branches: chains of nodes each the only neighbour of the next in its own
 // direction (Hilaga's branch, labelled as one by a match). Returns how many; each key's branch
 // gets its node's, numbered from 0 in the order of their first nodes.
 int prepare_branches(const std::vector<std::array<int, 2>>& only, std::vector<MatchKey>& keys);
-// Where each node's children in the upper half of its interval start (n entries), when every
-// child of node i lies in interval 2 interval(i) or 2 interval(i) + 1, the lower half first;
-// returns false (and `mid` unspecified) otherwise.
-bool prepare_child_halves(const MatchKey* keys, std::size_t n, const std::uint32_t* child_begin,
-                          const std::uint32_t* children, std::vector<std::uint32_t>& mid);
-// Whether g.children lists each node's children, from `child_begin` (prepare_nodes'), in index
-// order: graphs built or read from format 3 do; other values are checked, not trusted.
-bool children_in_order(const ArgGraph& g, const std::vector<std::uint32_t>& child_begin);
 void prepare_neighbour_parents(const ArgGraph& g, MatchPrep& out);
-void prepare_children(const ArgGraph& g, MatchPrep& out);
 // Level r's part of interval_begin (2^r + 1 entries from `out`).
 void prepare_interval_begin(const ArgGraph& g, int r, int* out);
 // `keyed` (optional) is scratch space kept by a caller that prepares many graphs.

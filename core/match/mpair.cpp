@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <utility>
 
+#include "match/child_halves.hpp"
 #include "match/match_prep.hpp"
 #include "match/node_similarity.hpp"
 #include "match/sim_key.hpp"
@@ -27,12 +28,13 @@ struct Side {
   std::vector<MatchKey> own_keys;
   const SimKey* sim = nullptr;  // per node, when its MatchPrep has them
   // Per node, its children in index order: children[child_begin[i], child_begin[i + 1]), the
-  // upper half of its interval's from child_mid[i]; nullptr when a graph's lists are not in
-  // index order or not in halves (the candidate scan then reads whole intervals).
+  // upper half of its interval's from child_mid[i] (match/child_halves.hpp); when `halved` is
+  // false the candidate scan reads whole intervals.
+  bool halved = false;
   const std::uint32_t* child_begin = nullptr;
   const std::uint32_t* child_mid = nullptr;
   const std::uint32_t* children = nullptr;
-  std::vector<std::uint32_t> own_child_begin, own_child_mid;
+  std::vector<std::uint32_t> own_child_begin, own_child_mid, own_children;
   const MatchPrep* prep = nullptr;  // its parents of neighbours, when it has a MatchPrep
 
   void reset(const ArgGraph& graph, const MatchPrep* given) {
@@ -42,21 +44,19 @@ struct Side {
     if (prep) {
       key = prep->keys.data();
       sim = prep->sim_keys.empty() ? nullptr : prep->sim_keys.data();
-      const bool halved = !prep->child_begin.empty();
-      child_begin = halved ? prep->child_begin.data() : nullptr;
-      child_mid = halved ? prep->child_mid.data() : nullptr;
-      children = halved ? prep->children.data() : nullptr;
+      halved = !prep->child_begin.empty();
+      child_begin = prep->child_begin.data();
+      child_mid = prep->child_mid.data();
+      children = prep->children.data();
       branch_label.assign(std::size_t(prep->branches), 0);
     } else {
-      prepare_nodes(graph, own_only, own_keys, &own_child_begin);
+      prepare_nodes(graph, own_only, own_keys);
       key = own_keys.data();
       sim = nullptr;
-      const bool halved = children_in_order(graph, own_child_begin) &&
-                          prepare_child_halves(key, own_keys.size(), own_child_begin.data(),
-                                               graph.children.data(), own_child_mid);
-      child_begin = halved ? own_child_begin.data() : nullptr;
-      child_mid = halved ? own_child_mid.data() : nullptr;
-      children = halved ? graph.children.data() : nullptr;
+      halved = prepare_child_halves(graph, own_keys, own_child_begin, own_child_mid, own_children);
+      child_begin = own_child_begin.data();
+      child_mid = own_child_mid.data();
+      children = own_children.data();
       branch_label.assign(std::size_t(prepare_branches(own_only, own_keys)), 0);
     }
   }
@@ -169,7 +169,7 @@ struct Scratch {
 }
 
 // node_sim of X's node m and Y's node n, from their sim keys when both sides have them (the
-// same bits; a key is one cache line, a node record four).
+// same bits from a sixth of the bytes of a node record).
 double pair_sim(const Side& X, int m, const Side& Y, int n, const Weights& w) {
   if (!X.sim || !Y.sim) return node_sim(X.node(m), Y.node(n), w);
   double s = key_sim(X.sim[m], Y.sim[n], w);
@@ -272,7 +272,7 @@ double match_graphs(const ArgGraph& gx, const MatchPrep* px, const ArgGraph& gy,
         }
         best = n, best_loss = loss;
       };
-      if (pg >= 0 && X.children && Y.children && !w.groups) {
+      if (pg >= 0 && X.halved && Y.halved && !w.groups) {
         // A candidate's parent is the one node of Y in m's parent's group (groups of several
         // nodes need w.groups): its children in m's interval, in index order, are the
         // interval's candidates as a scan of the whole interval would meet them. m lies in a

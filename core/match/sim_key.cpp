@@ -2,10 +2,14 @@
 #include "match/sim_key.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstring>
 
 namespace arg {
+
+// The argument above needs each product rounded to a float (not held in x87 registers).
+static_assert(FLT_EVAL_METHOD == 0, "float arithmetic in float");
 
 namespace {
 
@@ -21,10 +25,11 @@ bool codes_of(const float* bins, std::size_t count, float step, std::uint8_t* ou
   return true;
 }
 
-// histogram_min over codes: the same float bins and the same sum. Its order does not matter:
-// a nonzero minimum lies between min(sx, sy) (codes of 1) and 255 min(sx, sy), so every term's
-// 24-bit significand falls within 33 bits of the largest term's scale, and the sum of eight is
-// exact in a double whatever the order. Four running sums let the compiler use vector lanes.
+// histogram_min over codes: the same float bins and the same sum, in any order. With
+// E = floor(log2(min(sx, sy))), a nonzero minimum (both codes >= 1) is a float of at least
+// 2^E, so a multiple of 2^(E - 23), and below 255 min(sx, sy) < 2^(E + 9): eight of them and
+// every partial sum are integers below 2^35 in units of 2^(E - 23), which a double holds
+// exactly. Four running sums let the compiler use vector lanes.
 template <std::size_t N>
 double codes_min(const std::uint8_t* x, float sx, const std::uint8_t* y, float sy) {
   double part[4] = {0, 0, 0, 0};

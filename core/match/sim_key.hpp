@@ -1,4 +1,4 @@
-// What sim(m, n) reads of a node, packed in 40 bytes: areas, length, volume and histogram codes.
+// What sim(m, n) reads of a node in 40 bytes: area, length, volume, a/255 and 24 histogram codes.
 #pragma once
 
 #include <array>
@@ -15,7 +15,7 @@ inline constexpr std::size_t kSimKeyCodes = kCordBins + 2 * kCurvatureBins;
 static_assert(kCordBins % 4 == 0 && kCurvatureBins % 4 == 0, "key_sim sums bins four at a time");
 
 // A node as the group sims of match_graphs read it. A node record is 248 bytes, and loading a
-// matched node's record was most of node_sim's time (cache misses): this is one cache line.
+// matched node's record was most of node_sim's time (cache misses): this is a sixth of that.
 // Holds a histogram as format 3 stores it, bin k being float(code[k]) * step with step =
 // a / 255 (graph/quantise.hpp's bins_values), so that the sims come out bit for bit as from
 // the float records.

@@ -1,6 +1,8 @@
 // MatchPrep: comparing with a graph's prepared parts gives the same bits as without them.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <map>
 #include <vector>
 
 #include "match/match_prep.hpp"
@@ -8,6 +10,7 @@
 #include "match/weights.hpp"
 #include "pipeline/build_arg.hpp"
 #include "test_shapes.hpp"
+#include "test_stored_graphs.hpp"
 
 using namespace arg;
 
@@ -108,4 +111,50 @@ TEST(MatchPrep, APrepForOtherWeightsOrAnotherGraphIsNotUsed) {
   const double s0 = arg_similarity(graphs()[0], graphs()[1], arg_w);
   EXPECT_EQ(arg_similarity(graphs()[0], graphs()[1], arg_w, nullptr, &wrong_weights, nullptr), s0);
   EXPECT_EQ(arg_similarity(graphs()[0], graphs()[1], arg_w, nullptr, &wrong_graph, nullptr), s0);
+}
+
+namespace {
+
+// The branch labels the matcher used to walk at every match: from node i, to the only
+// neighbour up (and down) while that neighbour's only neighbour back is the node walked from.
+std::vector<int> walked_branches(const std::vector<std::array<int, 2>>& only) {
+  std::vector<int> label(only.size(), 0);
+  int next = 1;
+  for (std::size_t i = 0; i < only.size(); ++i) {
+    if (label[i] != 0) continue;
+    label[i] = next;
+    for (int up : {1, 0}) {
+      int cur = int(i);
+      for (int to; (to = only[std::size_t(cur)][std::size_t(up)]) >= 0; cur = to) {
+        if (only[std::size_t(to)][std::size_t(1 - up)] != cur || label[std::size_t(to)] != 0) break;
+        label[std::size_t(to)] = next;
+      }
+    }
+    ++next;
+  }
+  return label;
+}
+
+}  // namespace
+
+TEST(MatchPrep, BranchesAreTheChainsTheMatcherUsedToWalk) {
+  int forks = 0;
+  for (const ArgGraph& g : test::stored_graphs()) {
+    std::vector<std::array<int, 2>> only;
+    std::vector<MatchKey> keys;
+    prepare_nodes(g, only, keys);
+    const int count = prepare_branches(only, keys);
+    const std::vector<int> walked = walked_branches(only);
+    // The same partition of the nodes: one walked label per branch and one branch per label.
+    std::map<int, int> label_of, branch_of;
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+      ASSERT_GE(keys[i].branch, 0);
+      ASSERT_LT(keys[i].branch, count);
+      EXPECT_EQ(label_of.emplace(keys[i].branch, walked[i]).first->second, walked[i]) << i;
+      EXPECT_EQ(branch_of.emplace(walked[i], keys[i].branch).first->second, keys[i].branch) << i;
+    }
+    EXPECT_EQ(int(label_of.size()), count);
+    for (const auto& o : only) forks += o[0] < 0 || o[1] < 0;
+  }
+  EXPECT_GT(forks, 0);  // the models do fork and end: chains are not whole levels
 }
