@@ -34,6 +34,10 @@ struct Slot {
   bool repeated = false;    // the last graph_of() found `graph` already there
   bool prep_valid = false;  // `prep` describes `graph`
   arg::MatchPrep prep;
+  // The last value read by packed_row_of: its header, and whether `packed` holds it.
+  std::size_t packed_size = 0;
+  std::uint64_t packed_digest = 0;
+  arg::PackedGraph packed;
 };
 
 ToastKey toast_key(Datum raw) {
@@ -150,6 +154,29 @@ const arg::MatchPrep* match_prep_of(GraphCacheHolder* holder, int slot,
     s.prep_valid = true;
   }
   return &s.prep;
+}
+
+int repeating_slot(const GraphCacheHolder* holder) {
+  if (!holder || !holder->cache) return -1;
+  const Slot* s = holder->cache->slots;
+  const bool r0 = s[0].valid && s[0].repeated, r1 = s[1].valid && s[1].repeated;
+  return r0 == r1 ? -1 : r0 ? 0 : 1;
+}
+
+arg::PackedGraph* packed_row_of(GraphCacheHolder* holder, int slot, const GraphArg& argument,
+                                const arg::Weights& weights) {
+  if (!holder || argument.cached) return nullptr;
+  if (!holder->cache) holder->cache = new GraphCache();
+  Slot& s = holder->cache->slots[slot];
+  const std::string_view bytes = view(argument.value);
+  const std::uint64_t digest = raw_digest(bytes);
+  if (s.packed_size == bytes.size() && s.packed_digest == digest) return nullptr;
+  s.repeated = false;
+  s.packed_size = 0;  // until read
+  if (!arg::read_packed_graph(bytes, weights, s.packed)) return nullptr;
+  s.packed_size = bytes.size();
+  s.packed_digest = digest;
+  return &s.packed;
 }
 
 }  // namespace argpg

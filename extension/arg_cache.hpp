@@ -17,6 +17,7 @@
 
 #include "graph/arg_graph.hpp"
 #include "match/match_prep.hpp"
+#include "match/packed_graph.hpp"
 #include "match/weights.hpp"
 
 #include "arg_bridge.hpp"
@@ -56,5 +57,17 @@ const arg::ArgGraph& graph_of(GraphCacheHolder* holder, int slot, const GraphArg
 // second call on; an inline value only from its third (its second re-reads it to keep its bytes).
 const arg::MatchPrep* match_prep_of(GraphCacheHolder* holder, int slot,
                                     const arg::Weights& weights);
+
+// Inside guarded(): the slot that held the same value in the last call while the other did not
+// (a ranking's query), or -1.
+int repeating_slot(const GraphCacheHolder* holder);
+
+// Inside guarded(): the argument read as a ranking's row, straight into the slot's
+// PackedGraph with its prep for these weights (match/packed_graph.hpp), or nullptr when it is
+// better read whole by graph_of(): the slot already holds it, it has the header of the last row
+// read so (it may repeat: graph_of keeps such values), it is not format 3 without colour, or
+// there is no holder. The slot's graph keeps the value it held.
+arg::PackedGraph* packed_row_of(GraphCacheHolder* holder, int slot, const GraphArg& argument,
+                                const arg::Weights& weights);
 
 }  // namespace argpg

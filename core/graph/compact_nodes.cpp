@@ -15,14 +15,10 @@ namespace arg {
 
 namespace {
 
-constexpr float kHalfPi = 1.57079632679f, kPi = 3.14159265359f;
 constexpr std::uint16_t kNoParent = 0xffff;
 
 void put16(std::uint8_t* at, std::uint16_t x) {
   at[0] = std::uint8_t(x & 0xff), at[1] = std::uint8_t(x >> 8);
-}
-std::uint16_t get16(const unsigned char* at) {
-  return std::uint16_t(at[0] | at[1] << 8);
 }
 
 // Whether every bin is 0: a graph read row after row mostly holds no colour already, and not
@@ -80,6 +76,12 @@ void link_read_graph(ArgGraph& g, const std::vector<std::pair<std::uint32_t, std
 
 }  // namespace
 
+std::array<float, 256> byte_values(float lo, float hi) {
+  std::array<float, 256> v;
+  for (int q = 0; q < 256; ++q) v[std::size_t(q)] = byte_value(std::uint8_t(q), lo, hi);
+  return v;
+}
+
 std::vector<std::uint32_t> up_neighbour_counts(const ArgGraph& g) {
   std::vector<std::uint32_t> up(g.nodes.size(), 0);
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
@@ -126,8 +128,8 @@ namespace {
 
 // Buffers of one reader, reused between calls: a ranking reads row after row.
 struct ReadBuffers {
+  CompactRecords records;
   std::vector<std::uint8_t> up;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
   std::vector<std::uint32_t> fill;
 };
 
@@ -139,66 +141,52 @@ struct ReadBuffers {
 
 }  // namespace
 
-void read_compact_nodes(ByteReader& in, ArgGraph& g, std::uint32_t edges) {
-  ReadBuffers& b = thread_buffers();
-  std::vector<std::uint8_t>& up = b.up;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs = b.pairs;
-  const std::size_t count = g.nodes.size();
+void read_compact_records(ByteReader& in, const std::vector<std::uint32_t>& level_begin,
+                          std::size_t count, std::uint32_t edges, CompactRecords& out) {
+  std::vector<std::uint8_t>& up = thread_buffers().up;
   const auto* rec =
       reinterpret_cast<const unsigned char*>(in.get_bytes(count * kCompactNodeSize).data());
+  out.records = rec;
+  out.parent.resize(count);
+  out.interval.resize(count);
   up.resize(count);
   for (std::size_t r = 0, i = 0; i < count; ++i, rec += kCompactNodeSize) {
-    while (i >= g.level_begin[r + 1]) ++r;
+    while (i >= level_begin[r + 1]) ++r;
     auto bad = [&](const char* what) { in.fail("node " + std::to_string(i) + ": " + what); };
-    ArgNode& n = g.nodes[i];
-    n.level = std::uint16_t(r);
-    // The graph may hold an earlier value's nodes: link_read_graph counts from zero, and
-    // the colour section (when there is one) fills the colour.
-    n.child_count = n.adj_count = 0;
-    if (!g.summary.has_colour && !all_zero(n.colour)) n.colour.fill(0.0f);
     const std::uint16_t parent = get16(rec);
     if (r == 0) {
       if (parent != kNoParent) bad("level-0 node has a parent");
-      n.parent = -1;
+      out.parent[i] = -1;
     } else {
-      if (parent >= g.level_begin[r] - g.level_begin[r - 1]) bad("parent out of range");
-      n.parent = std::int32_t(g.level_begin[r - 1] + parent);
+      if (parent >= level_begin[r] - level_begin[r - 1]) bad("parent out of range");
+      out.parent[i] = std::int32_t(level_begin[r - 1] + parent);
     }
-    n.interval = rec[2];
-    if (n.interval >= (1u << r)) bad("interval out of range");
+    out.interval[i] = rec[2];
+    if (rec[2] >= (1u << r)) bad("interval out of range");
     up[i] = rec[3];
     if (rec[4] > rec[5]) bad("mu range reversed");
-    n.mu_min = mu_of_fraction(rec[4], n), n.mu_max = mu_of_fraction(rec[5], n);
-    n.theta = byte_value(rec[6], -kHalfPi, kHalfPi);
-    n.phi = byte_value(rec[7], 0, kPi);
-    n.r = byte_value(rec[8], 0, kMaxStoredRadius);
     const std::uint16_t area = get16(rec + 9);
     if (!canonical_bins(rec + 15, kCordBins, area) ||
         !canonical_bins(rec + 15 + kCordBins, kCurvatureBins, area) ||
         !canonical_bins(rec + 15 + kCordBins + kCurvatureBins, kCurvatureBins, area))
       bad("histogram codes sum over 255, or fill a node without area");
-    n.a = unit16_value(area);
-    n.l = unit16_value(get16(rec + 11));
-    n.v = unit16_value(get16(rec + 13));
-    bins_values(rec + 15, kCordBins, n.a, n.cords.data());
-    bins_values(rec + 15 + kCordBins, kCurvatureBins, n.a, n.curv_mean.data());
-    bins_values(rec + 15 + kCordBins + kCurvatureBins, kCurvatureBins, n.a, n.curv_gauss.data());
   }
   // Nodes sorted by interval within a level, each a child of a node of its interval's half:
   // what check_structure would ask, checked here so that format 3 can skip it.
-  for (std::size_t i = 1; i < count; ++i) {
-    const ArgNode &n = g.nodes[i], &before = g.nodes[i - 1];
-    if (n.level == before.level && n.interval < before.interval)
+  for (std::size_t r = 0, i = 1; i < count; ++i) {
+    while (i >= level_begin[r + 1]) ++r;
+    if (i > level_begin[r] && out.interval[i] < out.interval[i - 1])
       in.fail("node " + std::to_string(i) + ": nodes not sorted by interval");
   }
-  for (std::size_t i = g.level_begin[1]; i < count; ++i)
-    if (g.nodes[std::size_t(g.nodes[i].parent)].interval != g.nodes[i].interval / 2)
+  for (std::size_t i = level_begin[1]; i < count; ++i)
+    if (out.interval[std::size_t(out.parent[i])] != out.interval[i] / 2)
       in.fail("node " + std::to_string(i) + ": parent lies in another mu interval");
+  std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs = out.pairs;
   pairs.clear();
   pairs.reserve(edges);
-  for (std::size_t i = 0; i < count; ++i) {
-    const ArgNode& n = g.nodes[i];
-    const std::uint32_t first = g.level_begin[n.level], size = g.level_begin[n.level + 1] - first;
+  for (std::size_t r = 0, i = 0; i < count; ++i) {
+    while (i >= level_begin[r + 1]) ++r;
+    const std::uint32_t first = level_begin[r], size = level_begin[r + 1] - first;
     // 255 in the record: the count goes on in a 2-byte number before the list.
     const std::uint32_t up_count = up[i] < 255 ? up[i] : 255u + in.get<std::uint16_t>();
     if (up_count > edges - pairs.size())
@@ -207,7 +195,7 @@ void read_compact_nodes(ByteReader& in, ArgGraph& g, std::uint32_t edges) {
     std::uint32_t last = 0;
     for (std::uint32_t k = 0; k < up_count; ++k) {
       const std::uint32_t j = in.get<std::uint16_t>();
-      if (j >= size || g.nodes[first + j].interval != n.interval + 1u)
+      if (j >= size || out.interval[first + j] != out.interval[i] + 1u)
         in.fail("node " + std::to_string(i) + ": neighbour " + std::to_string(j) +
                 " is not in the next interval of its level");
       if (k > 0 && j <= last)
@@ -219,7 +207,33 @@ void read_compact_nodes(ByteReader& in, ArgGraph& g, std::uint32_t edges) {
   if (pairs.size() != edges)
     in.fail("nodes list " + std::to_string(pairs.size()) + " neighbours, header says " +
             std::to_string(edges));
-  link_read_graph(g, pairs, b.fill);
+}
+
+void read_compact_nodes(ByteReader& in, ArgGraph& g, std::uint32_t edges) {
+  ReadBuffers& b = thread_buffers();
+  CompactRecords& records = b.records;
+  const std::size_t count = g.nodes.size();
+  read_compact_records(in, g.level_begin, count, edges, records);
+  const unsigned char* rec = records.records;
+  for (std::size_t r = 0, i = 0; i < count; ++i, rec += kCompactNodeSize) {
+    while (i >= g.level_begin[r + 1]) ++r;
+    ArgNode& n = g.nodes[i];
+    n.level = std::uint16_t(r);
+    // The graph may hold an earlier value's nodes: link_read_graph counts from zero, and
+    // the colour section (when there is one) fills the colour.
+    n.child_count = n.adj_count = 0;
+    if (!g.summary.has_colour && !all_zero(n.colour)) n.colour.fill(0.0f);
+    n.parent = records.parent[i];
+    n.interval = records.interval[i];
+    n.mu_min = mu_of_fraction(rec[4], n), n.mu_max = mu_of_fraction(rec[5], n);
+    const CompactScalars s = compact_scalars(rec);
+    n.theta = s.theta, n.phi = s.phi, n.r = s.r;
+    n.a = s.a, n.l = s.l, n.v = s.v;
+    bins_values(rec + 15, kCordBins, n.a, n.cords.data());
+    bins_values(rec + 15 + kCordBins, kCurvatureBins, n.a, n.curv_mean.data());
+    bins_values(rec + 15 + kCordBins + kCurvatureBins, kCurvatureBins, n.a, n.curv_gauss.data());
+  }
+  link_read_graph(g, records.pairs, b.fill);
 }
 
 void write_compact_colour(const ArgGraph& g, ByteWriter& out) {

@@ -1,13 +1,16 @@
 // Format 3's node records: 39 bytes a node, neighbours as 2-byte indices, colour on its own.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "common/byte_io.hpp"
 #include "graph/arg_graph.hpp"
+#include "graph/quantise.hpp"
 
 namespace arg {
 
@@ -19,6 +22,29 @@ inline constexpr std::size_t kCompactNodeSize = 15 + kCordBins + 2 * kCurvatureB
 inline constexpr std::size_t kCompactColourSize = 3 * kColourBins;  // per node, fractions of a
 // The barycentre's radius is stored up to 4 RMS radii (matching reads it up to 2).
 inline constexpr float kMaxStoredRadius = 4.0f;
+inline constexpr float kHalfPi = 1.57079632679f, kPi = 3.14159265359f;
+
+inline std::uint16_t get16(const unsigned char* at) {
+  return std::uint16_t(at[0] | at[1] << 8);
+}
+
+// byte_value(q, lo, hi) of every code q: a lookup instead of a division, the same bits.
+std::array<float, 256> byte_values(float lo, float hi);
+inline const std::array<float, 256> kThetaValues = byte_values(-kHalfPi, kHalfPi),
+                                    kPhiValues = byte_values(0, kPi),
+                                    kRadiusValues = byte_values(0, kMaxStoredRadius);
+
+// A record's numbers as every reader decodes them (into a node record or a match key).
+struct CompactScalars {
+  float a, l, v, r, theta, phi;
+};
+inline CompactScalars compact_scalars(const unsigned char* rec) {
+  return {unit16_value(get16(rec + 9)),  unit16_value(get16(rec + 11)),
+          unit16_value(get16(rec + 13)), kRadiusValues[rec[8]],
+          kThetaValues[rec[6]],          kPhiValues[rec[7]]};
+}
+// Where a record's histogram codes start: cords, then mean and Gaussian curvature.
+inline constexpr std::size_t kCompactCodesAt = 15;
 
 // Per node, its neighbours in the next interval (the records' third byte): each undirected
 // edge is counted once, at its lower end.
@@ -30,8 +56,23 @@ std::vector<std::uint32_t> up_neighbour_counts(const ArgGraph& g);
 // far lower).
 void write_compact_nodes(const ArgGraph& g, const std::vector<std::uint32_t>& up, ByteWriter& out);
 
-// Reads `g.nodes.size()` records and `edges` neighbour indices, checking every field against
-// the level table (already checked), and links the graph. Throws InputError.
+// A node section read and checked but not decoded: the records where they lie in the value,
+// each node's parent and interval, and the edges as (lower end, upper end) pairs sorted by
+// lower end, then upper end.
+struct CompactRecords {
+  const unsigned char* records = nullptr;  // kCompactNodeSize bytes a node, inside the value
+  std::vector<std::int32_t> parent;        // -1 on level 0
+  std::vector<std::uint16_t> interval;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+};
+
+// Reads `count` records and `edges` neighbour indices, checking every field against the level
+// table (already checked): parents, intervals, mu ranges, histogram codes, the order of nodes
+// and of neighbours. The one check of format 3's nodes. Throws InputError.
+void read_compact_records(ByteReader& in, const std::vector<std::uint32_t>& level_begin,
+                          std::size_t count, std::uint32_t edges, CompactRecords& out);
+
+// read_compact_records for `g.nodes.size()` nodes, decoded into g's records and linked.
 void read_compact_nodes(ByteReader& in, ArgGraph& g, std::uint32_t edges);
 
 // The colour histograms of every node, kCompactColourSize bytes each.

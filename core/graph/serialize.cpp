@@ -228,8 +228,7 @@ void check_node_values(const ArgNode& n, std::size_t i) {
 
 // The level table: every level present, in order, covering every node; format 3 also bounds
 // the nodes of a level.
-void check_level_table(const ArgGraph& g) {
-  const std::size_t n = g.nodes.size();
+void check_level_table(const ArgGraph& g, std::size_t n) {
   const int levels = g.levels();
   if (g.level_begin[0] != 0) fail("level table does not start at node 0");
   for (std::size_t r = 1; r < kLevelSlots; ++r) {
@@ -250,7 +249,7 @@ void check_level_table(const ArgGraph& g) {
 void check_structure(const ArgGraph& g) {
   const std::size_t n = g.nodes.size();
   const int levels = g.levels();
-  check_level_table(g);
+  check_level_table(g, n);
 
   std::uint32_t child_cursor = 0, adj_cursor = 0;
   std::vector<std::uint8_t> seen_as_child(n, 0);
@@ -523,7 +522,7 @@ void deserialize_arg_into(std::string_view bytes, ArgGraph& g, bool check_digest
   g.nodes.resize(h.node_count);
   if (h.version >= 3) {
     // Decoding needs each node's level: the level table first.
-    check_level_table(g);
+    check_level_table(g, g.nodes.size());
     read_compact_nodes(in, g, h.adjacency_count);
   } else {
     read_float_records(in, g, h);
@@ -536,6 +535,28 @@ void deserialize_arg_into(std::string_view bytes, ArgGraph& g, bool check_digest
   // Format 3's reader checks every link as it reads it and builds the rest consistent.
   if (h.version < 3) check_structure(g);
   g.level_begin.resize(std::size_t(g.levels()) + 2);
+}
+
+bool read_compact_value(std::string_view bytes, ArgGraph& head, CompactRecords& nodes) {
+  if (bytes.size() < kHeaderSize1)
+    fail("value of " + std::to_string(bytes.size()) + " bytes is shorter than the header (" +
+         std::to_string(kHeaderSize1) + ")");
+  head.options = BuildOptions{};
+  head.summary = ArgSummary{};
+  head.nodes.clear();
+  head.children.clear();
+  head.adjacency.clear();
+  head.panorama.clear();
+  head.spectrum.clear();
+  ByteReader in(bytes, "ARG");
+  const Header h = read_header(in, bytes, head, /*check_digest=*/false);
+  if (h.version < 3 || head.summary.has_colour) return false;
+  check_level_table(head, h.node_count);
+  read_compact_records(in, head.level_begin, h.node_count, h.adjacency_count, nodes);
+  // No colour, so read_sections needs no node records (a colour section is refused).
+  read_sections(in, bytes.size(), head, /*check_values=*/false);
+  head.level_begin.resize(std::size_t(head.levels()) + 2);
+  return true;
 }
 
 ArgGraph deserialize_arg(std::string_view bytes, bool check_digest) {

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "graph/arg_graph.hpp"
+#include "graph/compact_nodes.hpp"
 
 namespace arg {
 
@@ -37,6 +38,12 @@ ArgGraph deserialize_arg(std::string_view bytes, bool check_digest = true);
 // On error `graph` holds a partial value: read it again before use.
 void deserialize_arg_into(std::string_view bytes, ArgGraph& graph, bool check_digest = true);
 
+// Reads a format-3 value without colour as deserialize_arg_into(bytes, head, false) would,
+// but leaves its node section undecoded in `nodes` (read_compact_records: every check made)
+// and head.nodes, children and adjacency empty: for a reader that needs only some of each
+// node (a ranking's row, match/packed_graph.hpp). Returns false, having read only the header,
+// for other values: read them whole. Throws InputError as deserialize_arg does.
+bool read_compact_value(std::string_view bytes, ArgGraph& head, CompactRecords& nodes);
 // Only the checks, no copy.
 void validate_arg_bytes(std::string_view bytes);
 

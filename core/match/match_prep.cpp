@@ -73,11 +73,9 @@ void prepare_neighbour_parents(const ArgGraph& g, MatchPrep& out) {
 }
 
 void prepare_interval_begin(const ArgGraph& g, int r, int* out) {
-  const int b = int(g.level_begin[std::size_t(r)]), e = int(g.level_begin[std::size_t(r) + 1]);
-  const int intervals = 1 << r;
-  std::fill(out, out + intervals + 1, e);
-  for (int n = e - 1; n >= b; --n) out[g.nodes[std::size_t(n)].interval] = n;
-  for (int k = intervals - 1; k >= 0; --k) out[k] = std::min(out[k], out[k + 1]);
+  fill_interval_begin(
+      int(g.level_begin[std::size_t(r)]), int(g.level_begin[std::size_t(r) + 1]), r,
+      [&g](int n) { return g.nodes[std::size_t(n)].interval; }, out);
 }
 
 void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out,
@@ -86,14 +84,20 @@ void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out,
   out.self.resize(n);
   out.total = 0;
   for (std::size_t m = 0; m < n; ++m) out.total += out.self[m] = node_self_sim(g.nodes[m], w);
+  prepare_order(g.level_begin, g.levels(), out, scratch);
+}
+
+void prepare_order(const std::vector<std::uint32_t>& level_begin, int levels, MatchPrep::Sums& out,
+                   std::vector<std::pair<double, int>>* scratch) {
+  const std::size_t n = out.self.size();
   // Sorted as (-sim, index) pairs, which keeps the keys beside each other in memory.
   std::vector<std::pair<double, int>> own;
   std::vector<std::pair<double, int>>& keyed = scratch ? *scratch : own;
   keyed.resize(n);
   for (std::size_t m = 0; m < n; ++m) keyed[m] = {-out.self[m], int(m)};
   out.order.resize(n);
-  for (int r = 0; r <= g.levels(); ++r) {
-    const std::size_t b = g.level_begin[std::size_t(r)], e = g.level_begin[std::size_t(r) + 1];
+  for (int r = 0; r <= levels; ++r) {
+    const std::size_t b = level_begin[std::size_t(r)], e = level_begin[std::size_t(r) + 1];
     std::sort(keyed.begin() + std::ptrdiff_t(b), keyed.begin() + std::ptrdiff_t(e));
     for (std::size_t k = b; k < e; ++k) out.order[k] = keyed[k].second;
   }
@@ -124,14 +128,18 @@ void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out) {
 }
 
 bool prep_shape_fits(const MatchPrep* prep, const ArgGraph& g) {
-  const std::size_t n = g.nodes.size();
-  return prep && prep->level_begin == g.level_begin && prep->parent_split.size() == n &&
+  if (!prep) return false;
+  // A head (no node records, match/packed_graph.hpp) is matched on its prep's keys alone.
+  const bool head = g.nodes.empty();
+  const std::size_t n = head ? prep->keys.size() : g.nodes.size();
+  if (head && (n == 0 || prep->sim_keys.size() != n)) return false;
+  return prep->level_begin == g.level_begin && prep->parent_split.size() == n &&
          prep->parent_begin.size() == n + 1 && prep->keys.size() == n &&
          (prep->child_begin.empty() ||
           (prep->child_begin.size() == n + 1 && prep->child_mid.size() == n &&
            prep->child_begin[n] == prep->children.size())) &&
          (prep->sim_keys.empty() || prep->sim_keys.size() == n) && prep->plain.self.size() == n &&
-         prep->plain.order.size() == n &&
+         (prep->plain.order.size() == n || prep->plain.order.empty()) &&
          prep->interval_begin.size() == interval_offset(g.levels() + 1);
 }
 

@@ -38,7 +38,9 @@ struct MatchPrep {
   struct Sums {
     std::vector<double> self;  // per node
     double total = 0;          // over every node: the graph's share of SIM's denominator
-    std::vector<int> order;    // per level, its nodes by decreasing self sim, ties by index
+    // Per level, its nodes by decreasing self sim, ties by index; may be empty (a row's,
+    // match/packed_graph.hpp) when the graph is not matched first.
+    std::vector<int> order;
   };
   Weights weights;                         // as given to prepare_match (before the colour rule)
   std::vector<std::uint32_t> level_begin;  // the graph's level table, checked on use
@@ -72,7 +74,8 @@ void prepare_match(const ArgGraph& g, const Weights& weights, MatchPrep& out);
 
 // Whether `prep` was made for a graph of g's shape (node count and level table), and also
 // with these weights (a cheap guard that keeps every read in bounds: the caller keeps prep and
-// graph together).
+// graph together). A graph without node records (a head, match/packed_graph.hpp) fits a prep
+// with sim keys of its level table: the prep alone then stands for its nodes.
 bool prep_shape_fits(const MatchPrep* prep, const ArgGraph& g);
 bool prep_fits(const MatchPrep* prep, const ArgGraph& g, const Weights& weights);
 
@@ -88,8 +91,19 @@ int prepare_branches(const std::vector<std::array<int, 2>>& only, std::vector<Ma
 void prepare_neighbour_parents(const ArgGraph& g, MatchPrep& out);
 // Level r's part of interval_begin (2^r + 1 entries from `out`).
 void prepare_interval_begin(const ArgGraph& g, int r, int* out);
+// The same from the level's nodes [b, e), node n's interval being interval_of(n).
+template <class IntervalOf>
+void fill_interval_begin(int b, int e, int r, IntervalOf&& interval_of, int* out) {
+  const int intervals = 1 << r;
+  for (int k = 0; k <= intervals; ++k) out[k] = e;
+  for (int n = e - 1; n >= b; --n) out[interval_of(n)] = n;
+  for (int k = intervals - 1; k >= 0; --k) out[k] = out[k] < out[k + 1] ? out[k] : out[k + 1];
+}
 // `keyed` (optional) is scratch space kept by a caller that prepares many graphs.
 void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out,
                   std::vector<std::pair<double, int>>* keyed = nullptr);
+// Its second half: out.order from out.self, level by level of `level_begin` (levels + 2 entries).
+void prepare_order(const std::vector<std::uint32_t>& level_begin, int levels, MatchPrep::Sums& out,
+                   std::vector<std::pair<double, int>>* keyed = nullptr);
 
 }  // namespace arg

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <utility>
 
+#include "common/errors.hpp"
 #include "match/child_halves.hpp"
 #include "match/match_prep.hpp"
 #include "match/node_similarity.hpp"
@@ -39,8 +40,10 @@ struct Side {
 
   void reset(const ArgGraph& graph, const MatchPrep* given) {
     g = &graph;
-    group.assign(graph.nodes.size(), -1);
     prep = prep_shape_fits(given, graph) ? given : nullptr;
+    if (graph.nodes.empty() && !prep)
+      throw InputError("ARG: a graph without node records came to matching without its prep");
+    group.assign(prep ? prep->keys.size() : graph.nodes.size(), -1);
     if (prep) {
       key = prep->keys.data();
       sim = prep->sim_keys.empty() ? nullptr : prep->sim_keys.data();
@@ -217,10 +220,16 @@ double match_graphs(const ArgGraph& gx, const MatchPrep* px, const ArgGraph& gy,
   Side& X = s.x;
   Side& Y = s.y;
   X.reset(gx, px), Y.reset(gy, py);
+  // A head (match/packed_graph.hpp) has only its keys: what would read node records is out.
+  if ((gx.nodes.empty() || gy.nodes.empty()) && (!X.sim || !Y.sim || w.groups || w.lambda_4 > 0))
+    throw InputError("ARG: a graph without node records cannot be matched with these weights");
   s.groups.clear();
   if (group_sim) group_sim->clear();
   const int levels = std::min(gx.levels(), gy.levels());
   const MatchPrep::Sums* sums = X.prep ? X.prep->sums(w.lambda_4 != 0) : nullptr;
+  if (sums && sums->order.size() != sums->self.size()) sums = nullptr;
+  if (!sums && gx.nodes.empty())
+    throw InputError("ARG: a graph without node records came to matching first without its order");
   if (!sums) {
     prepare_sums(gx, w, s.own_sums, &s.keyed);
     sums = &s.own_sums;

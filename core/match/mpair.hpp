@@ -52,9 +52,12 @@ double match_graphs(const ArgGraph& x, const MatchPrep* px, const ArgGraph& y, c
 
 // sim(m, m) without the histogram loops: every histogram of a node sums to its area (colour:
 // each of its three channels, counted a third each).
+inline double node_self_sim(float a, float l, float v, const Weights& w) {
+  return (w.alpha_s + w.lambda_2 + w.lambda_3 + w.lambda_4) * double(a) + w.beta_s * double(l) +
+         w.lambda_1 * double(v);
+}
 inline double node_self_sim(const ArgNode& n, const Weights& w) {
-  return (w.alpha_s + w.lambda_2 + w.lambda_3 + w.lambda_4) * double(n.a) + w.beta_s * double(n.l) +
-         w.lambda_1 * double(n.v);
+  return node_self_sim(n.a, n.l, n.v, w);
 }
 
 }  // namespace arg

@@ -3,16 +3,28 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 
 #include "features/laplace_spectrum.hpp"
 #include "features/panorama_descriptor.hpp"
 #include "match/match_prep.hpp"
 #include "match/mpair.hpp"
 #include "match/node_similarity.hpp"
+#include "match/packed_graph.hpp"
 
 namespace arg {
 
 namespace {
+
+// The first keys of compare_graphs: counts, then the global descriptor, which a head
+// (match/packed_graph.hpp) has too.
+int compare_heads(std::size_t a_nodes, int a_levels, std::size_t a_adjacency, const ArgGraph& a,
+                  std::size_t b_nodes, int b_levels, std::size_t b_adjacency, const ArgGraph& b) {
+  if (a_nodes != b_nodes) return a_nodes < b_nodes ? -1 : 1;
+  if (a_levels != b_levels) return a_levels < b_levels ? -1 : 1;
+  if (a_adjacency != b_adjacency) return a_adjacency < b_adjacency ? -1 : 1;
+  return std::memcmp(a.global.data(), b.global.data(), sizeof(float) * a.global.size());
+}
 
 // Total order on graphs by content, so that (A, B) and (B, A) are matched the same way;
 // 0 only for graphs equal in every node, link and descriptor value.
@@ -20,11 +32,8 @@ int compare_graphs(const ArgGraph& a, const ArgGraph& b) {
   static_assert(sizeof(ArgNode) ==
                     2 * 2 + 4 * 5 + 4 * 8 + 4 * (kCordBins + 2 * kCurvatureBins + 3 * kColourBins),
                 "ArgNode must have no padding: it is compared with memcmp");
-  if (a.nodes.size() != b.nodes.size()) return a.nodes.size() < b.nodes.size() ? -1 : 1;
-  if (a.levels() != b.levels()) return a.levels() < b.levels() ? -1 : 1;
-  if (a.adjacency.size() != b.adjacency.size())
-    return a.adjacency.size() < b.adjacency.size() ? -1 : 1;
-  if (int c = std::memcmp(a.global.data(), b.global.data(), sizeof(float) * a.global.size()))
+  if (int c = compare_heads(a.nodes.size(), a.levels(), a.adjacency.size(), a, b.nodes.size(),
+                            b.levels(), b.adjacency.size(), b))
     return c;
   if (int c = std::memcmp(a.nodes.data(), b.nodes.data(), sizeof(ArgNode) * a.nodes.size()))
     return c;
@@ -88,26 +97,25 @@ double similarity_ordered(const ArgGraph& x, const MatchPrep* px, const ArgGraph
   return std::clamp(1.0 - numerator / denominator, 0.0, 1.0);
 }
 
-}  // namespace
-
-double graph_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& weights,
-                        std::vector<MatchPair>* matches, const MatchPrep* prep_a,
-                        const MatchPrep* prep_b) {
+// graph_similarity with compare_graphs(a, b) given as `order` (computed when not given).
+double graph_similarity_in(const ArgGraph& a, const ArgGraph& b, const Weights& weights,
+                           std::vector<MatchPair>* matches, const MatchPrep* prep_a,
+                           const MatchPrep* prep_b, std::optional<int> order) {
   // Colour is compared only when both models have some; otherwise it weighs nothing.
   Weights w = weights;
   if (!(a.summary.has_colour && b.summary.has_colour)) w.lambda_4 = 0;
   if (!prep_fits(prep_a, a, weights)) prep_a = nullptr;
   if (!prep_fits(prep_b, b, weights)) prep_b = nullptr;
-  const int order = compare_graphs(a, b);
-  if (order == 0 && !matches) return 0.0;  // identical graphs: self-identity holds exactly
-  const double s = order > 0 ? similarity_ordered(b, prep_b, a, prep_a, w, matches, true)
-                             : similarity_ordered(a, prep_a, b, prep_b, w, matches, false);
-  return order == 0 ? 0.0 : s;
+  if (!order) order = compare_graphs(a, b);
+  if (*order == 0 && !matches) return 0.0;  // identical graphs: self-identity holds exactly
+  const double s = *order > 0 ? similarity_ordered(b, prep_b, a, prep_a, w, matches, true)
+                              : similarity_ordered(a, prep_a, b, prep_b, w, matches, false);
+  return *order == 0 ? 0.0 : s;
 }
 
-SimilarityParts similarity_parts(const ArgGraph& a, const ArgGraph& b, const Weights& w,
-                                 std::vector<MatchPair>* matches, const MatchPrep* prep_a,
-                                 const MatchPrep* prep_b) {
+SimilarityParts parts_in(const ArgGraph& a, const ArgGraph& b, const Weights& w,
+                         std::vector<MatchPair>* matches, const MatchPrep* prep_a,
+                         const MatchPrep* prep_b, std::optional<int> order) {
   SimilarityParts p;
   // A proxy's graph is a shell's (weights.hpp): it counts its share graph_on_proxy.
   const bool on_proxy = ((a.summary.flags | b.summary.flags) & kFlagProxy) != 0;
@@ -126,7 +134,8 @@ SimilarityParts similarity_parts(const ArgGraph& a, const ArgGraph& b, const Wei
   }
   // Values without the whole-shape sections (format 1) fall back on the graph alone.
   if (p.w_graph + p.w_panorama + p.w_spectrum <= 0) p.w_graph = 1;
-  if (p.w_graph > 0 || matches) p.graph = graph_similarity(a, b, w, matches, prep_a, prep_b);
+  if (p.w_graph > 0 || matches)
+    p.graph = graph_similarity_in(a, b, w, matches, prep_a, prep_b, order);
   const double total = p.w_graph + p.w_panorama + p.w_spectrum;
   p.sim = std::clamp(
       (p.w_graph * p.graph + p.w_panorama * p.panorama + p.w_spectrum * p.spectrum) / total, 0.0,
@@ -134,11 +143,43 @@ SimilarityParts similarity_parts(const ArgGraph& a, const ArgGraph& b, const Wei
   return p;
 }
 
+}  // namespace
+
+double graph_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& weights,
+                        std::vector<MatchPair>* matches, const MatchPrep* prep_a,
+                        const MatchPrep* prep_b) {
+  return graph_similarity_in(a, b, weights, matches, prep_a, prep_b, std::nullopt);
+}
+
+SimilarityParts similarity_parts(const ArgGraph& a, const ArgGraph& b, const Weights& w,
+                                 std::vector<MatchPair>* matches, const MatchPrep* prep_a,
+                                 const MatchPrep* prep_b) {
+  return parts_in(a, b, w, matches, prep_a, prep_b, std::nullopt);
+}
+
 double arg_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& weights,
                       std::vector<MatchPair>* matches, const MatchPrep* prep_a,
                       const MatchPrep* prep_b) {
-  if (!matches && compare_graphs(a, b) == 0) return 0.0;  // identical: self-identity exactly
-  return similarity_parts(a, b, weights, matches, prep_a, prep_b).sim;
+  if (matches) return similarity_parts(a, b, weights, matches, prep_a, prep_b).sim;
+  const int order = compare_graphs(a, b);
+  if (order == 0) return 0.0;  // identical: self-identity exactly
+  return parts_in(a, b, weights, nullptr, prep_a, prep_b, order).sim;
+}
+
+bool packed_similarity(const ArgGraph& a, const MatchPrep* prep_a, PackedGraph& b,
+                       const Weights& weights, double& sim) {
+  // What matching a head allows (mpair.cpp): sim keys on both sides, no node groups, no colour
+  // (b has none).
+  if (a.nodes.empty() || weights.groups || !prep_fits(prep_a, a, weights) ||
+      prep_a->sim_keys.empty())
+    return false;
+  const int order = compare_heads(a.nodes.size(), a.levels(), a.adjacency.size(), a,
+                                  b.prep.keys.size(), b.head.levels(), b.adjacency, b.head);
+  if (order == 0) return false;          // the node records would decide
+  if (order > 0) order_packed_graph(b);  // b is matched first: its order is read
+  if (!prep_fits(&b.prep, b.head, weights)) return false;
+  sim = parts_in(a, b.head, weights, nullptr, prep_a, &b.prep, order).sim;
+  return true;
 }
 
 }  // namespace arg

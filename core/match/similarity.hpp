@@ -11,6 +11,7 @@
 namespace arg {
 
 struct MatchPrep;
+struct PackedGraph;
 
 // One matched pair; a node matched to a group appears in several rows with the same group.
 struct MatchPair {
@@ -32,6 +33,15 @@ struct MatchPair {
 double arg_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& weights = {},
                       std::vector<MatchPair>* matches = nullptr, const MatchPrep* prep_a = nullptr,
                       const MatchPrep* prep_b = nullptr);
+
+// arg_similarity(a, b's decoded graph, weights, nullptr, prep_a, b's prep) for a row read by
+// read_packed_graph with these weights, the same to the bit, without b's node records. Returns
+// false, `sim` untouched, when that needs them: the weights group nodes, prep_a does not fit a
+// (or has no sim keys), or b's counts and global descriptor equal a's (the node records would
+// order the two). Compare b decoded then.
+// b's prep gets its order when b is matched first (order_packed_graph).
+bool packed_similarity(const ArgGraph& a, const MatchPrep* prep_a, PackedGraph& b,
+                       const Weights& weights, double& sim);
 
 // The graph's own SIM (Hilaga et al., Tung and Schmitt): 1 - matched sim over self sim, in
 // [0, 1], 0 for identical graphs, exactly symmetric. Fills `matches` if given.
