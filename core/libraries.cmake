@@ -32,8 +32,8 @@ set(ARG_METHOD_SOURCES
     graph/arg_graph.cpp graph/comparable.cpp graph/compact_nodes.cpp graph/pool_fragments.cpp
     graph/quantise.cpp graph/search_descriptor.cpp graph/serialize.cpp
     match/child_halves.cpp match/match_prep.cpp match/mpair.cpp match/node_similarity.cpp
-    match/packed_graph.cpp match/part_match.cpp match/sim_key.cpp match/similarity.cpp match/similarity_terms.cpp
-    match/subgraph.cpp match/weights.cpp
+    match/packed_graph.cpp match/part_match.cpp match/sim_key.cpp match/similarity.cpp
+    match/similarity_terms.cpp match/subgraph.cpp match/weights.cpp
     pipeline/build_arg.cpp pipeline/build_options.cpp pipeline/node_positions.cpp
     pipeline/prepare_surface.cpp)
 set(ARG_GEN_SOURCES

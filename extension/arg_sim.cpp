@@ -18,12 +18,11 @@ double similarity(FunctionCallInfo fcinfo, const arg::Weights& weights) {
     // A ranking: one argument repeats (its graph and prep kept), the other brings a row a
     // call, read straight into the matcher's keys when it can be (half of a row's time was
     // decoding it into node records and preparing it from them).
-    // (Node groups read node records: no row is read so.)
-    if (const int query = argpg::repeating_slot(cache); query >= 0 && !weights.groups) {
+    if (const int query = argpg::repeating_slot(cache); query >= 0) {
       const int row = 1 - query;
       g[query] = &argpg::graph_of(cache, query, args[query], scratch[query]);
       const arg::MatchPrep* prep = argpg::match_prep_of(cache, query, weights);
-      arg::PackedGraph* packed = prep && !prep->sim_keys.empty()
+      arg::PackedGraph* packed = arg::packs_rows(*g[query], prep, weights)
                                      ? argpg::packed_row_of(cache, row, args[row], weights)
                                      : nullptr;
       if (packed) {

@@ -15,7 +15,15 @@ namespace arg {
 
 namespace {
 
+constexpr float kHalfPi = 1.57079632679f, kPi = 3.14159265359f;
 constexpr std::uint16_t kNoParent = 0xffff;
+using compact_detail::get16;
+
+std::array<float, 256> byte_values(float lo, float hi) {
+  std::array<float, 256> v;
+  for (int q = 0; q < 256; ++q) v[std::size_t(q)] = byte_value(std::uint8_t(q), lo, hi);
+  return v;
+}
 
 void put16(std::uint8_t* at, std::uint16_t x) {
   at[0] = std::uint8_t(x & 0xff), at[1] = std::uint8_t(x >> 8);
@@ -76,11 +84,9 @@ void link_read_graph(ArgGraph& g, const std::vector<std::pair<std::uint32_t, std
 
 }  // namespace
 
-std::array<float, 256> byte_values(float lo, float hi) {
-  std::array<float, 256> v;
-  for (int q = 0; q < 256; ++q) v[std::size_t(q)] = byte_value(std::uint8_t(q), lo, hi);
-  return v;
-}
+const std::array<float, 256> compact_detail::theta_values = byte_values(-kHalfPi, kHalfPi),
+                             compact_detail::phi_values = byte_values(0, kPi),
+                             compact_detail::radius_values = byte_values(0, kMaxStoredRadius);
 
 std::vector<std::uint32_t> up_neighbour_counts(const ArgGraph& g) {
   std::vector<std::uint32_t> up(g.nodes.size(), 0);
@@ -108,9 +114,10 @@ void write_compact_nodes(const ArgGraph& g, const std::vector<std::uint32_t>& up
     put16(rec + 11, quantise_unit16(n.l));
     put16(rec + 13, quantise_unit16(n.v));
     const float area = stored_area(n);
-    quantise_bins(n.cords.data(), kCordBins, area, rec + 15);
-    quantise_bins(n.curv_mean.data(), kCurvatureBins, area, rec + 15 + kCordBins);
-    quantise_bins(n.curv_gauss.data(), kCurvatureBins, area, rec + 15 + kCordBins + kCurvatureBins);
+    quantise_bins(n.cords.data(), kCordBins, area, rec + kCompactCodesAt);
+    quantise_bins(n.curv_mean.data(), kCurvatureBins, area, rec + kCompactCodesAt + kCordBins);
+    quantise_bins(n.curv_gauss.data(), kCurvatureBins, area,
+                  rec + kCompactCodesAt + kCordBins + kCurvatureBins);
     out.put_bytes(std::string_view(reinterpret_cast<const char*>(rec), kCompactNodeSize));
   }
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
@@ -150,10 +157,12 @@ void read_compact_records(ByteReader& in, const std::vector<std::uint32_t>& leve
   out.parent.resize(count);
   out.interval.resize(count);
   up.resize(count);
+  // One pass: a node's parent lies in the level above, so its interval is known by then.
   for (std::size_t r = 0, i = 0; i < count; ++i, rec += kCompactNodeSize) {
     while (i >= level_begin[r + 1]) ++r;
     auto bad = [&](const char* what) { in.fail("node " + std::to_string(i) + ": " + what); };
     const std::uint16_t parent = get16(rec);
+    const std::uint16_t interval = rec[2];
     if (r == 0) {
       if (parent != kNoParent) bad("level-0 node has a parent");
       out.parent[i] = -1;
@@ -161,51 +170,49 @@ void read_compact_records(ByteReader& in, const std::vector<std::uint32_t>& leve
       if (parent >= level_begin[r] - level_begin[r - 1]) bad("parent out of range");
       out.parent[i] = std::int32_t(level_begin[r - 1] + parent);
     }
-    out.interval[i] = rec[2];
-    if (rec[2] >= (1u << r)) bad("interval out of range");
+    out.interval[i] = interval;
+    if (interval >= (1u << r)) bad("interval out of range");
     up[i] = rec[3];
     if (rec[4] > rec[5]) bad("mu range reversed");
     const std::uint16_t area = get16(rec + 9);
-    if (!canonical_bins(rec + 15, kCordBins, area) ||
-        !canonical_bins(rec + 15 + kCordBins, kCurvatureBins, area) ||
-        !canonical_bins(rec + 15 + kCordBins + kCurvatureBins, kCurvatureBins, area))
+    if (!canonical_bins(rec + kCompactCodesAt, kCordBins, area) ||
+        !canonical_bins(rec + kCompactCodesAt + kCordBins, kCurvatureBins, area) ||
+        !canonical_bins(rec + kCompactCodesAt + kCordBins + kCurvatureBins, kCurvatureBins, area))
       bad("histogram codes sum over 255, or fill a node without area");
+    // Nodes sorted by interval within a level, each a child of a node of its interval's half:
+    // what check_structure would ask, checked here so that format 3 can skip it.
+    if (i > level_begin[r] && interval < out.interval[i - 1]) bad("nodes not sorted by interval");
+    if (r > 0 && out.interval[std::size_t(out.parent[i])] != interval / 2)
+      bad("parent lies in another mu interval");
   }
-  // Nodes sorted by interval within a level, each a child of a node of its interval's half:
-  // what check_structure would ask, checked here so that format 3 can skip it.
-  for (std::size_t r = 0, i = 1; i < count; ++i) {
-    while (i >= level_begin[r + 1]) ++r;
-    if (i > level_begin[r] && out.interval[i] < out.interval[i - 1])
-      in.fail("node " + std::to_string(i) + ": nodes not sorted by interval");
-  }
-  for (std::size_t i = level_begin[1]; i < count; ++i)
-    if (out.interval[std::size_t(out.parent[i])] != out.interval[i] / 2)
-      in.fail("node " + std::to_string(i) + ": parent lies in another mu interval");
   std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs = out.pairs;
-  pairs.clear();
-  pairs.reserve(edges);
+  pairs.resize(edges);
+  std::size_t read = 0;
   for (std::size_t r = 0, i = 0; i < count; ++i) {
     while (i >= level_begin[r + 1]) ++r;
     const std::uint32_t first = level_begin[r], size = level_begin[r + 1] - first;
     // 255 in the record: the count goes on in a 2-byte number before the list.
     const std::uint32_t up_count = up[i] < 255 ? up[i] : 255u + in.get<std::uint16_t>();
-    if (up_count > edges - pairs.size())
+    if (up_count > edges - read)
       in.fail("node " + std::to_string(i) + ": more neighbours than the header's " +
               std::to_string(edges));
+    if (up_count == 0) continue;
+    const auto* list = reinterpret_cast<const unsigned char*>(in.get_bytes(2 * up_count).data());
+    const std::uint32_t above = out.interval[i] + 1u;
     std::uint32_t last = 0;
     for (std::uint32_t k = 0; k < up_count; ++k) {
-      const std::uint32_t j = in.get<std::uint16_t>();
-      if (j >= size || out.interval[first + j] != out.interval[i] + 1u)
+      const std::uint32_t j = get16(list + 2 * k);
+      if (j >= size || out.interval[first + j] != above)
         in.fail("node " + std::to_string(i) + ": neighbour " + std::to_string(j) +
                 " is not in the next interval of its level");
       if (k > 0 && j <= last)
         in.fail("node " + std::to_string(i) + ": neighbours not sorted or repeated");
       last = j;
-      pairs.push_back({std::uint32_t(i), first + j});
+      pairs[read++] = {std::uint32_t(i), first + j};
     }
   }
-  if (pairs.size() != edges)
-    in.fail("nodes list " + std::to_string(pairs.size()) + " neighbours, header says " +
+  if (read != edges)
+    in.fail("nodes list " + std::to_string(read) + " neighbours, header says " +
             std::to_string(edges));
 }
 
@@ -229,9 +236,10 @@ void read_compact_nodes(ByteReader& in, ArgGraph& g, std::uint32_t edges) {
     const CompactScalars s = compact_scalars(rec);
     n.theta = s.theta, n.phi = s.phi, n.r = s.r;
     n.a = s.a, n.l = s.l, n.v = s.v;
-    bins_values(rec + 15, kCordBins, n.a, n.cords.data());
-    bins_values(rec + 15 + kCordBins, kCurvatureBins, n.a, n.curv_mean.data());
-    bins_values(rec + 15 + kCordBins + kCurvatureBins, kCurvatureBins, n.a, n.curv_gauss.data());
+    bins_values(rec + kCompactCodesAt, kCordBins, n.a, n.cords.data());
+    bins_values(rec + kCompactCodesAt + kCordBins, kCurvatureBins, n.a, n.curv_mean.data());
+    bins_values(rec + kCompactCodesAt + kCordBins + kCurvatureBins, kCurvatureBins, n.a,
+                n.curv_gauss.data());
   }
   link_read_graph(g, records.pairs, b.fill);
 }

@@ -22,26 +22,25 @@ inline constexpr std::size_t kCompactNodeSize = 15 + kCordBins + 2 * kCurvatureB
 inline constexpr std::size_t kCompactColourSize = 3 * kColourBins;  // per node, fractions of a
 // The barycentre's radius is stored up to 4 RMS radii (matching reads it up to 2).
 inline constexpr float kMaxStoredRadius = 4.0f;
-inline constexpr float kHalfPi = 1.57079632679f, kPi = 3.14159265359f;
 
+namespace compact_detail {
 inline std::uint16_t get16(const unsigned char* at) {
   return std::uint16_t(at[0] | at[1] << 8);
 }
-
-// byte_value(q, lo, hi) of every code q: a lookup instead of a division, the same bits.
-std::array<float, 256> byte_values(float lo, float hi);
-inline const std::array<float, 256> kThetaValues = byte_values(-kHalfPi, kHalfPi),
-                                    kPhiValues = byte_values(0, kPi),
-                                    kRadiusValues = byte_values(0, kMaxStoredRadius);
+// byte_value(q, lo, hi) of every code q for theta, phi and r: a lookup instead of a division
+// (three a node, on every row of a ranking), the same bits.
+extern const std::array<float, 256> theta_values, phi_values, radius_values;
+}  // namespace compact_detail
 
 // A record's numbers as every reader decodes them (into a node record or a match key).
 struct CompactScalars {
   float a, l, v, r, theta, phi;
 };
 inline CompactScalars compact_scalars(const unsigned char* rec) {
+  using namespace compact_detail;
   return {unit16_value(get16(rec + 9)),  unit16_value(get16(rec + 11)),
-          unit16_value(get16(rec + 13)), kRadiusValues[rec[8]],
-          kThetaValues[rec[6]],          kPhiValues[rec[7]]};
+          unit16_value(get16(rec + 13)), radius_values[rec[8]],
+          theta_values[rec[6]],          phi_values[rec[7]]};
 }
 // Where a record's histogram codes start: cords, then mean and Gaussian curvature.
 inline constexpr std::size_t kCompactCodesAt = 15;

@@ -29,8 +29,13 @@ inline float byte_value(std::uint8_t q, float lo, float hi) {
 // remainders) so the bins read back sum to the total again. At most 64 bins; a total of 0
 // stores zeros.
 void quantise_bins(const float* bins, std::size_t count, float total, std::uint8_t* out);
+// A code's worth of a histogram of `total`: bin k is float(code k) * code_step(total), in every
+// reader (graph/compact_nodes.cpp, match/sim_key.hpp), so that their bins agree to the bit.
+inline float code_step(float total) {
+  return total / 255.0f;
+}
 inline void bins_values(const std::uint8_t* q, std::size_t count, float total, float* out) {
-  const float step = total / 255.0f;  // one multiplication a bin
+  const float step = code_step(total);  // one multiplication a bin
   for (std::size_t k = 0; k < count; ++k) out[k] = float(q[k]) * step;
 }
 

@@ -507,18 +507,26 @@ std::string serialize_arg(const ArgGraph& g) {
   return std::move(bytes);
 }
 
-void deserialize_arg_into(std::string_view bytes, ArgGraph& g, bool check_digest) {
+namespace {
+
+// The start of every read: the length checked, what the reader does not overwrite back to its
+// default (the vectors keep their storage), the header read.
+Header begin_read(ByteReader& in, std::string_view bytes, ArgGraph& g, bool check_digest) {
   if (bytes.size() < kHeaderSize1)
     fail("value of " + std::to_string(bytes.size()) + " bytes is shorter than the header (" +
          std::to_string(kHeaderSize1) + ")");
-  // Everything the reader does not overwrite goes back to its default; the vectors keep
-  // their storage.
   g.options = BuildOptions{};
   g.summary = ArgSummary{};
   g.panorama.clear();
   g.spectrum.clear();
+  return read_header(in, bytes, g, check_digest);
+}
+
+}  // namespace
+
+void deserialize_arg_into(std::string_view bytes, ArgGraph& g, bool check_digest) {
   ByteReader in(bytes, "ARG");
-  Header h = read_header(in, bytes, g, check_digest);
+  const Header h = begin_read(in, bytes, g, check_digest);
   g.nodes.resize(h.node_count);
   if (h.version >= 3) {
     // Decoding needs each node's level: the level table first.
@@ -538,18 +546,11 @@ void deserialize_arg_into(std::string_view bytes, ArgGraph& g, bool check_digest
 }
 
 bool read_compact_value(std::string_view bytes, ArgGraph& head, CompactRecords& nodes) {
-  if (bytes.size() < kHeaderSize1)
-    fail("value of " + std::to_string(bytes.size()) + " bytes is shorter than the header (" +
-         std::to_string(kHeaderSize1) + ")");
-  head.options = BuildOptions{};
-  head.summary = ArgSummary{};
   head.nodes.clear();
   head.children.clear();
   head.adjacency.clear();
-  head.panorama.clear();
-  head.spectrum.clear();
   ByteReader in(bytes, "ARG");
-  const Header h = read_header(in, bytes, head, /*check_digest=*/false);
+  const Header h = begin_read(in, bytes, head, /*check_digest=*/false);
   if (h.version < 3 || head.summary.has_colour) return false;
   check_level_table(head, h.node_count);
   read_compact_records(in, head.level_begin, h.node_count, h.adjacency_count, nodes);

@@ -6,9 +6,10 @@
 #include <string_view>
 
 #include "graph/arg_graph.hpp"
-#include "graph/compact_nodes.hpp"
 
 namespace arg {
+
+struct CompactRecords;  // graph/compact_nodes.hpp
 
 // The version this build writes; it reads 1 (no proxy option, no sections), 2 (float records,
 // float sections) and 3 (byte-coded records and sections, colour only when there is colour).

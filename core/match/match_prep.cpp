@@ -4,6 +4,7 @@
 #include "match/match_prep.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <utility>
 
 #include "match/child_halves.hpp"
@@ -16,6 +17,19 @@ const MatchPrep::Sums* MatchPrep::sums(bool colour_counts) const {
   return coloured.self.size() == plain.self.size() ? &coloured : nullptr;
 }
 
+namespace {
+
+// Where node n's neighbours above start in its adjacency (sorted, those below at lower indices:
+// nodes of a level are sorted by interval).
+const std::uint32_t* above_begin(const ArgGraph& g, std::size_t i) {
+  const ArgNode& n = g.nodes[i];
+  const std::uint32_t *adj = g.adjacency.data() + n.adj_begin, *end = adj + n.adj_count;
+  while (adj != end && *adj < i) ++adj;
+  return adj;
+}
+
+}  // namespace
+
 void prepare_nodes(const ArgGraph& g, std::vector<std::array<int, 2>>& only,
                    std::vector<MatchKey>& keys) {
   // One pass: what it reads lies in the first 64 bytes of a node's record.
@@ -24,14 +38,8 @@ void prepare_nodes(const ArgGraph& g, std::vector<std::array<int, 2>>& only,
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
     const ArgNode& n = g.nodes[i];
     keys[i] = {n.parent, n.interval, n.a, n.l, n.r, n.theta, n.phi};
-    const std::uint32_t* adj = g.adjacency.data() + n.adj_begin;
-    int found[2] = {-1, -1}, count[2] = {0, 0};
-    for (std::uint32_t k = 0; k < n.adj_count; ++k) {
-      const int side = adj[k] > i ? 1 : 0;  // nodes of a level are sorted by interval
-      found[side] = int(adj[k]), ++count[side];
-    }
-    for (int side = 0; side < 2; ++side)
-      only[i][std::size_t(side)] = count[side] == 1 ? found[side] : -1;
+    const std::uint32_t *adj = g.adjacency.data() + n.adj_begin, *split = above_begin(g, i);
+    only[i] = {only_neighbour(adj, split), only_neighbour(split, adj + n.adj_count)};
   }
 }
 
@@ -54,20 +62,10 @@ void prepare_neighbour_parents(const ArgGraph& g, MatchPrep& out) {
   out.parents.clear();
   for (std::size_t i = 0; i < n; ++i) {
     const ArgNode& node = g.nodes[i];
-    const std::uint32_t* adj = g.adjacency.data() + node.adj_begin;
-    out.parent_begin[i] = std::uint32_t(out.parents.size());
-    for (int side = 0; side < 2; ++side) {
-      if (side == 1) out.parent_split[i] = std::uint32_t(out.parents.size());
-      const std::size_t first = out.parents.size();
-      for (std::uint32_t k = 0; k < node.adj_count; ++k) {
-        if ((adj[k] > i ? 1 : 0) != side) continue;  // nodes of a level are sorted by interval
-        const int p = g.nodes[adj[k]].parent;
-        if (p < 0) continue;
-        if (std::find(out.parents.begin() + std::ptrdiff_t(first), out.parents.end(), p) ==
-            out.parents.end())
-          out.parents.push_back(p);
-      }
-    }
+    const std::uint32_t *adj = g.adjacency.data() + node.adj_begin, *split = above_begin(g, i);
+    add_neighbour_parents(
+        i, adj, split, split, adj + node.adj_count,
+        [&g](std::uint32_t j) { return g.nodes[j].parent; }, out);
   }
   out.parent_begin[n] = std::uint32_t(out.parents.size());
 }
@@ -79,27 +77,39 @@ void prepare_interval_begin(const ArgGraph& g, int r, int* out) {
 }
 
 void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out,
-                  std::vector<std::pair<double, int>>* scratch) {
-  const std::size_t n = g.nodes.size();
-  out.self.resize(n);
-  out.total = 0;
-  for (std::size_t m = 0; m < n; ++m) out.total += out.self[m] = node_self_sim(g.nodes[m], w);
+                  std::vector<OrderKey>* scratch) {
+  fill_self(
+      g.nodes.size(), [&](std::size_t m) { return node_self_sim(g.nodes[m], w); }, out);
   prepare_order(g.level_begin, g.levels(), out, scratch);
 }
 
+namespace {
+
+// Orders doubles as integers: larger self sims first (their bits, made monotonic over the sign
+// and complemented), -0 as +0, so that the keys sort as (-self, index) pairs would.
+std::uint64_t descending(double x) {
+  x += 0.0;  // -0 to +0
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  const std::uint64_t ascending = (bits >> 63) != 0 ? ~bits : bits | (std::uint64_t(1) << 63);
+  return ~ascending;
+}
+
+}  // namespace
+
 void prepare_order(const std::vector<std::uint32_t>& level_begin, int levels, MatchPrep::Sums& out,
-                   std::vector<std::pair<double, int>>* scratch) {
+                   std::vector<OrderKey>* scratch) {
   const std::size_t n = out.self.size();
-  // Sorted as (-sim, index) pairs, which keeps the keys beside each other in memory.
-  std::vector<std::pair<double, int>> own;
-  std::vector<std::pair<double, int>>& keyed = scratch ? *scratch : own;
+  std::vector<OrderKey> own;
+  std::vector<OrderKey>& keyed = scratch ? *scratch : own;
   keyed.resize(n);
-  for (std::size_t m = 0; m < n; ++m) keyed[m] = {-out.self[m], int(m)};
+  for (std::size_t m = 0; m < n; ++m)
+    keyed[m] = OrderKey(descending(out.self[m])) << 32 | std::uint32_t(m);
   out.order.resize(n);
   for (int r = 0; r <= levels; ++r) {
     const std::size_t b = level_begin[std::size_t(r)], e = level_begin[std::size_t(r) + 1];
     std::sort(keyed.begin() + std::ptrdiff_t(b), keyed.begin() + std::ptrdiff_t(e));
-    for (std::size_t k = b; k < e; ++k) out.order[k] = keyed[k].second;
+    for (std::size_t k = b; k < e; ++k) out.order[k] = int(std::uint32_t(keyed[k]));
   }
 }
 
@@ -132,7 +142,9 @@ bool prep_shape_fits(const MatchPrep* prep, const ArgGraph& g) {
   // A head (no node records, match/packed_graph.hpp) is matched on its prep's keys alone.
   const bool head = g.nodes.empty();
   const std::size_t n = head ? prep->keys.size() : g.nodes.size();
-  if (head && (n == 0 || prep->sim_keys.size() != n)) return false;
+  if (head && (n == 0 || prep->sim_keys.size() != n || g.level_begin.size() < 2 ||
+               g.level_begin.back() != n))
+    return false;
   return prep->level_begin == g.level_begin && prep->parent_split.size() == n &&
          prep->parent_begin.size() == n + 1 && prep->keys.size() == n &&
          (prep->child_begin.empty() ||

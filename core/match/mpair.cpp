@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <stdexcept>
 #include <utility>
 
-#include "common/errors.hpp"
 #include "match/child_halves.hpp"
 #include "match/match_prep.hpp"
 #include "match/node_similarity.hpp"
@@ -42,7 +42,7 @@ struct Side {
     g = &graph;
     prep = prep_shape_fits(given, graph) ? given : nullptr;
     if (graph.nodes.empty() && !prep)
-      throw InputError("ARG: a graph without node records came to matching without its prep");
+      throw std::logic_error("a graph without node records came to matching without its prep");
     group.assign(prep ? prep->keys.size() : graph.nodes.size(), -1);
     if (prep) {
       key = prep->keys.data();
@@ -155,9 +155,9 @@ struct Founded {
 
 struct Scratch {
   Side x, y;
-  MatchPrep::Sums own_sums;  // X's self sims and order when it comes without a MatchPrep
-  std::vector<std::pair<double, int>> keyed;  // prepare_sums' scratch
-  std::vector<int> y_interval_begin;          // per interval of the current level: first Y node
+  MatchPrep::Sums own_sums;           // X's self sims and order when it comes without a MatchPrep
+  std::vector<OrderKey> keyed;        // prepare_sums' scratch
+  std::vector<int> y_interval_begin;  // per interval of the current level: first Y node
   LevelParents x_parents, y_parents;
   std::vector<Founded> groups;
   std::vector<std::pair<int, int>> extra_x, extra_y;  // (group, node) beyond the founders
@@ -222,14 +222,14 @@ double match_graphs(const ArgGraph& gx, const MatchPrep* px, const ArgGraph& gy,
   X.reset(gx, px), Y.reset(gy, py);
   // A head (match/packed_graph.hpp) has only its keys: what would read node records is out.
   if ((gx.nodes.empty() || gy.nodes.empty()) && (!X.sim || !Y.sim || w.groups || w.lambda_4 > 0))
-    throw InputError("ARG: a graph without node records cannot be matched with these weights");
+    throw std::logic_error("a graph without node records cannot be matched with these weights");
   s.groups.clear();
   if (group_sim) group_sim->clear();
   const int levels = std::min(gx.levels(), gy.levels());
   const MatchPrep::Sums* sums = X.prep ? X.prep->sums(w.lambda_4 != 0) : nullptr;
   if (sums && sums->order.size() != sums->self.size()) sums = nullptr;
   if (!sums && gx.nodes.empty())
-    throw InputError("ARG: a graph without node records came to matching first without its order");
+    throw std::logic_error("a graph without node records came to matching first without its order");
   if (!sums) {
     prepare_sums(gx, w, s.own_sums, &s.keyed);
     sums = &s.own_sums;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "graph/compact_nodes.hpp"
+#include "graph/quantise.hpp"
 #include "graph/serialize.hpp"
 #include "match/mpair.hpp"
 #include "match/sim_key.hpp"
@@ -18,9 +19,9 @@ namespace {
 // Buffers of one reader, reused row after row.
 struct PackedBuffers {
   CompactRecords records;
-  std::vector<std::uint32_t> below_begin, below, above_begin, fill;
+  std::vector<std::uint32_t> below_begin, below, above_begin, above, fill;
   std::vector<std::array<int, 2>> only;
-  std::vector<std::pair<double, int>> keyed;
+  std::vector<OrderKey> keyed;
 };
 
 // The calling thread's buffers, looked up once a call (see thread_scratch in mpair.cpp).
@@ -39,8 +40,13 @@ void neighbour_lists(std::size_t n, const CompactRecords& r, PackedBuffers& b) {
     b.below_begin[i + 1] += b.below_begin[i], b.above_begin[i + 1] += b.above_begin[i];
   // Pairs come by lower end: node i's upper ends are the pairs from above_begin[i], in order.
   b.below.resize(r.pairs.size());
+  b.above.resize(r.pairs.size());
   b.fill.assign(b.below_begin.begin(), b.below_begin.end() - 1);
-  for (auto [lo, hi] : r.pairs) b.below[b.fill[hi]++] = lo;
+  for (std::size_t k = 0; k < r.pairs.size(); ++k) {
+    const auto [lo, hi] = r.pairs[k];
+    b.below[b.fill[hi]++] = lo;
+    b.above[k] = hi;
+  }
 }
 
 }  // namespace
@@ -67,32 +73,22 @@ bool read_packed_graph(std::string_view bytes, const Weights& weights, PackedGra
     const CompactScalars s = compact_scalars(rec);
     p.keys[i] = {r.parent[i], r.interval[i], s.a, s.l, s.r, s.theta, s.phi};
     SimKey& k = p.sim_keys[i];
-    k.a = s.a, k.l = s.l, k.v = s.v, k.step = s.a / 255.0f;  // as bins_values computes it
+    k.a = s.a, k.l = s.l, k.v = s.v, k.step = code_step(s.a);
     std::memcpy(k.code.data(), rec + kCompactCodesAt, kSimKeyCodes);
     // As prepare_nodes and prepare_neighbour_parents find them in the decoded adjacency.
-    const std::uint32_t lists[2][2] = {{b.below_begin[i], b.below_begin[i + 1]},
-                                       {b.above_begin[i], b.above_begin[i + 1]}};
-    p.parent_begin[i] = std::uint32_t(p.parents.size());
-    for (int side = 0; side < 2; ++side) {
-      const auto [from, to] = lists[side];
-      const std::uint32_t* at = side == 0 ? b.below.data() : nullptr;
-      auto neighbour = [&](std::uint32_t k) { return side == 0 ? at[k] : r.pairs[k].second; };
-      b.only[i][std::size_t(side)] = to - from == 1 ? int(neighbour(from)) : -1;
-      if (side == 1) p.parent_split[i] = std::uint32_t(p.parents.size());
-      const std::size_t first = p.parents.size();
-      for (std::uint32_t k = from; k < to; ++k) {
-        const int parent = r.parent[neighbour(k)];
-        if (parent < 0) continue;
-        if (std::find(p.parents.begin() + std::ptrdiff_t(first), p.parents.end(), parent) ==
-            p.parents.end())
-          p.parents.push_back(parent);
-      }
-    }
+    const std::uint32_t* below = b.below.data() + b.below_begin[i];
+    const std::uint32_t* below_end = b.below.data() + b.below_begin[i + 1];
+    const std::uint32_t* above = b.above.data() + b.above_begin[i];
+    const std::uint32_t* above_end = b.above.data() + b.above_begin[i + 1];
+    b.only[i] = {only_neighbour(below, below_end), only_neighbour(above, above_end)};
+    add_neighbour_parents(
+        i, below, below_end, above, above_end, [&r](std::uint32_t j) { return r.parent[j]; }, p);
   }
   p.parent_begin[n] = std::uint32_t(p.parents.size());
   p.branches = prepare_branches(b.only, p.keys);
-  // Children in index order, so a parent's lower half first (nodes of a level are sorted by
-  // interval, and the reader checked that each lies in a half of its parent's interval).
+  // The lists of match/child_halves.cpp (which checks, for any graph, what the reader checked
+  // here): children in index order, so a parent's lower half first (nodes of a level are sorted
+  // by interval, and each lies in a half of its parent's interval).
   p.child_begin.assign(n + 1, 0);
   for (std::size_t i = 0; i < n; ++i)
     if (r.parent[i] >= 0) ++p.child_begin[std::size_t(r.parent[i]) + 1];
@@ -117,18 +113,19 @@ bool read_packed_graph(std::string_view bytes, const Weights& weights, PackedGra
   // No colour: the plain sums are the only ones.
   Weights plain = weights;
   plain.lambda_4 = 0;
-  p.plain.self.resize(n);
-  double total = 0;  // in a register: the sum runs in node order, as prepare_sums's
-  for (std::size_t i = 0; i < n; ++i) {
-    const SimKey& k = p.sim_keys[i];
-    total += p.plain.self[i] = node_self_sim(k.a, k.l, k.v, plain);
-  }
-  p.plain.total = total;
+  fill_self(
+      n,
+      [&](std::size_t i) {
+        const SimKey& k = p.sim_keys[i];
+        return node_self_sim(k.a, k.l, k.v, plain);
+      },
+      p.plain);
   p.plain.order.clear();  // only when the row comes first (order_packed_graph)
   p.coloured.self.clear();
   p.coloured.order.clear();
   p.coloured.total = 0;
   p.level_begin = g.level_begin;
+  r.records = nullptr;  // it pointed into `bytes`
   return true;
 }
 

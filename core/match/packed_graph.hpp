@@ -1,5 +1,4 @@
-// A stored value as a ranking compares its rows: the head and the matcher's keys, read from the
-// bytes without node records.
+// A ranking's row as matching reads it: its head and keys, straight from its stored bytes.
 #pragma once
 
 #include <cstddef>

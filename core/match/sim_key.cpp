@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "graph/quantise.hpp"
+
 namespace arg {
 
 // The argument above needs each product rounded to a float (not held in x87 registers).
@@ -48,7 +50,7 @@ bool make_sim_keys(const ArgGraph& g, std::vector<SimKey>& out) {
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
     const ArgNode& n = g.nodes[i];
     SimKey& k = out[i];
-    k.a = n.a, k.l = n.l, k.v = n.v, k.step = n.a / 255.0f;  // as bins_values computes it
+    k.a = n.a, k.l = n.l, k.v = n.v, k.step = code_step(n.a);
     std::uint8_t* code = k.code.data();
     if (!codes_of(n.cords.data(), kCordBins, k.step, code) ||
         !codes_of(n.curv_mean.data(), kCurvatureBins, k.step, code + kCordBins) ||

@@ -2,8 +2,10 @@
 #include "match/similarity.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <optional>
+#include <stdexcept>
 
 #include "features/laplace_spectrum.hpp"
 #include "features/panorama_descriptor.hpp"
@@ -16,13 +18,23 @@ namespace arg {
 
 namespace {
 
-// The first keys of compare_graphs: counts, then the global descriptor, which a head
-// (match/packed_graph.hpp) has too.
-int compare_heads(std::size_t a_nodes, int a_levels, std::size_t a_adjacency, const ArgGraph& a,
-                  std::size_t b_nodes, int b_levels, std::size_t b_adjacency, const ArgGraph& b) {
-  if (a_nodes != b_nodes) return a_nodes < b_nodes ? -1 : 1;
-  if (a_levels != b_levels) return a_levels < b_levels ? -1 : 1;
-  if (a_adjacency != b_adjacency) return a_adjacency < b_adjacency ? -1 : 1;
+// The first keys of compare_graphs, which a head (match/packed_graph.hpp) has too: counts,
+// then the global descriptor.
+struct HeadKey {
+  std::size_t nodes, adjacency;
+  int levels;
+  const std::array<float, kGlobalDims>& global;
+};
+HeadKey head_key(const ArgGraph& g) {
+  return {g.nodes.size(), g.adjacency.size(), g.levels(), g.global};
+}
+HeadKey head_key(const PackedGraph& g) {
+  return {g.prep.keys.size(), g.adjacency, g.head.levels(), g.head.global};
+}
+int compare_heads(const HeadKey& a, const HeadKey& b) {
+  if (a.nodes != b.nodes) return a.nodes < b.nodes ? -1 : 1;
+  if (a.levels != b.levels) return a.levels < b.levels ? -1 : 1;
+  if (a.adjacency != b.adjacency) return a.adjacency < b.adjacency ? -1 : 1;
   return std::memcmp(a.global.data(), b.global.data(), sizeof(float) * a.global.size());
 }
 
@@ -32,9 +44,10 @@ int compare_graphs(const ArgGraph& a, const ArgGraph& b) {
   static_assert(sizeof(ArgNode) ==
                     2 * 2 + 4 * 5 + 4 * 8 + 4 * (kCordBins + 2 * kCurvatureBins + 3 * kColourBins),
                 "ArgNode must have no padding: it is compared with memcmp");
-  if (int c = compare_heads(a.nodes.size(), a.levels(), a.adjacency.size(), a, b.nodes.size(),
-                            b.levels(), b.adjacency.size(), b))
-    return c;
+  // A head (no node records) is ordered by packed_similarity alone.
+  if (a.nodes.empty() || b.nodes.empty())
+    throw std::logic_error("a graph without node records came to compare_graphs");
+  if (int c = compare_heads(head_key(a), head_key(b))) return c;
   if (int c = std::memcmp(a.nodes.data(), b.nodes.data(), sizeof(ArgNode) * a.nodes.size()))
     return c;
   // Equal node records imply equal section sizes; an empty section may have no storage at all.
@@ -106,6 +119,9 @@ double graph_similarity_in(const ArgGraph& a, const ArgGraph& b, const Weights& 
   if (!(a.summary.has_colour && b.summary.has_colour)) w.lambda_4 = 0;
   if (!prep_fits(prep_a, a, weights)) prep_a = nullptr;
   if (!prep_fits(prep_b, b, weights)) prep_b = nullptr;
+  // A head has no node records to list pairs of (compare_graphs refuses to order one).
+  if ((a.nodes.empty() || b.nodes.empty()) && matches)
+    throw std::logic_error("a graph without node records came to list matched pairs");
   if (!order) order = compare_graphs(a, b);
   if (*order == 0 && !matches) return 0.0;  // identical graphs: self-identity holds exactly
   const double s = *order > 0 ? similarity_ordered(b, prep_b, a, prep_a, w, matches, true)
@@ -166,18 +182,19 @@ double arg_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& weigh
   return parts_in(a, b, weights, nullptr, prep_a, prep_b, order).sim;
 }
 
+bool packs_rows(const ArgGraph& a, const MatchPrep* prep_a, const Weights& weights) {
+  // What matching a head allows (mpair.cpp): sim keys on both sides, no node groups, no colour
+  // (a head has none).
+  return !a.nodes.empty() && !weights.groups && prep_fits(prep_a, a, weights) &&
+         !prep_a->sim_keys.empty();
+}
+
 bool packed_similarity(const ArgGraph& a, const MatchPrep* prep_a, PackedGraph& b,
                        const Weights& weights, double& sim) {
-  // What matching a head allows (mpair.cpp): sim keys on both sides, no node groups, no colour
-  // (b has none).
-  if (a.nodes.empty() || weights.groups || !prep_fits(prep_a, a, weights) ||
-      prep_a->sim_keys.empty())
-    return false;
-  const int order = compare_heads(a.nodes.size(), a.levels(), a.adjacency.size(), a,
-                                  b.prep.keys.size(), b.head.levels(), b.adjacency, b.head);
+  if (!packs_rows(a, prep_a, weights) || !prep_fits(&b.prep, b.head, weights)) return false;
+  const int order = compare_heads(head_key(a), head_key(b));
   if (order == 0) return false;          // the node records would decide
   if (order > 0) order_packed_graph(b);  // b is matched first: its order is read
-  if (!prep_fits(&b.prep, b.head, weights)) return false;
   sim = parts_in(a, b.head, weights, nullptr, prep_a, &b.prep, order).sim;
   return true;
 }

@@ -34,11 +34,15 @@ double arg_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& weigh
                       std::vector<MatchPair>* matches = nullptr, const MatchPrep* prep_a = nullptr,
                       const MatchPrep* prep_b = nullptr);
 
+// Whether rows may be compared with `a` as packed graphs: a decoded graph whose prep fits it
+// with sim keys, and weights that do not group nodes (groups read node records).
+bool packs_rows(const ArgGraph& a, const MatchPrep* prep_a, const Weights& weights);
+
 // arg_similarity(a, b's decoded graph, weights, nullptr, prep_a, b's prep) for a row read by
 // read_packed_graph with these weights, the same to the bit, without b's node records. Returns
-// false, `sim` untouched, when that needs them: the weights group nodes, prep_a does not fit a
-// (or has no sim keys), or b's counts and global descriptor equal a's (the node records would
-// order the two). Compare b decoded then.
+// false, `sim` untouched, when that needs them: not packs_rows, b not read (its prep unfit), or
+// b's counts and global descriptor equal a's (the node records would order the two). Compare b
+// decoded then.
 // b's prep gets its order when b is matched first (order_packed_graph).
 bool packed_similarity(const ArgGraph& a, const MatchPrep* prep_a, PackedGraph& b,
                        const Weights& weights, double& sim);

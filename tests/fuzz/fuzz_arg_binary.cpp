@@ -2,7 +2,8 @@
 //
 // With the digest checked, what the reader accepts must serialise back unchanged. Without it (a
 // stored value read back, serialize.hpp), node values are not checked and mutated bytes reach the
-// structural checks directly; whatever passes them must be safe to match.
+// structural checks directly; whatever passes them must be safe to match, and a ranking's row
+// reader must agree with it (check_packed_reader).
 #include "fuzz_support.hpp"
 #include "gen/generate_models.hpp"
 #include "graph/comparable.hpp"
@@ -19,6 +20,12 @@ inline const ArgGraph& binary_reference_graph() {
     options.base_points = 16;
     return build_arg(generate_model("fourleg", 1, 10, true).mesh, options);
   }();
+  return graph;
+}
+
+// The same read back from its bytes, as a ranking's query is (its histograms byte codes).
+inline const ArgGraph& binary_reference_value() {
+  static const ArgGraph graph = stored_form(binary_reference_graph());
   return graph;
 }
 
@@ -43,6 +50,7 @@ inline int fuzz_arg_binary(const std::uint8_t* data, std::size_t size) {
                    graph.builder_version / 100 != current_builder_version() / 100);
   } catch (const Error&) {
   }
+  check_packed_reader(bytes, binary_reference_value());
   return 0;
 }
 

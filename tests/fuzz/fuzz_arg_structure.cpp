@@ -4,9 +4,11 @@
 // real ARG (built from a small generated model), applies the fuzz input as patches, reseals the
 // digest and checks that the structural validation rejects (with InputError) or accepts
 // consistently; whatever it accepts must serialise back unchanged and be safe to match, and so
-// must what it accepts without the value checks (deserialize_arg with check_digest false).
+// must what it accepts without the value checks (deserialize_arg with check_digest false), and
+// a ranking's row reader must agree with it (check_packed_reader).
 //
-// Input: byte 0 picks the base graph; then patches of [offset: u16 LE][length: u8][bytes]. With
+// Input: byte 0 picks the base graph (bit 6: one without colour, which a ranking reads as a row
+// straight into its keys); then patches of [offset: u16 LE][length: u8][bytes]. With
 // bit 7 of byte 0 set, the declared total size is refreshed after patching, so patches that
 // change counts can be combined with an input whose tail (after the last patch) resizes the value
 // to a multiple of 4 bytes: the last two bytes, as a signed 16-bit LE word count to add.
@@ -21,7 +23,7 @@
 
 namespace arg::fuzz {
 
-// A few small real graphs: different classes, levels and topology.
+// A few small real graphs: different classes, levels and topology; with colour, then without.
 inline const std::vector<std::string>& base_graphs() {
   static const std::vector<std::string> bases = [] {
     struct Spec {
@@ -29,14 +31,15 @@ inline const std::vector<std::string>& base_graphs() {
       int levels;
     };
     std::vector<std::string> out;
-    for (const Spec& spec :
-         {Spec{"torus", 3}, Spec{"fourleg", 4}, Spec{"cup", 2}, Spec{"octopus", 5}}) {
-      BuildOptions options;
-      options.levels = spec.levels;
-      options.base_points = 16;
-      out.push_back(
-          serialize_arg(build_arg(generate_model(spec.label, 0, 10, true).mesh, options)));
-    }
+    for (bool colour : {true, false})
+      for (const Spec& spec :
+           {Spec{"torus", 3}, Spec{"fourleg", 4}, Spec{"cup", 2}, Spec{"octopus", 5}}) {
+        BuildOptions options;
+        options.levels = spec.levels;
+        options.base_points = 16;
+        out.push_back(
+            serialize_arg(build_arg(generate_model(spec.label, 0, 10, colour).mesh, options)));
+      }
     return out;
   }();
   return bases;
@@ -49,7 +52,9 @@ inline void put_u32(std::string& bytes, std::size_t at, std::uint32_t value) {
 inline int fuzz_arg_structure(const std::uint8_t* data, std::size_t size) {
   if (size < 1) return 0;
   const std::vector<std::string>& bases = base_graphs();
-  const std::string& base = bases[(data[0] & 0x7f) % bases.size()];
+  // Bits 0-5 pick the model, bit 6 the model without colour (4 to 7).
+  const std::size_t pick = (data[0] & 0x3f) % 4 + ((data[0] & 0x40) ? 4 : 0);
+  const std::string& base = bases[pick];
   const bool refresh_size = (data[0] & 0x80) != 0;
   std::string bytes = base;
   std::size_t at = 1;
@@ -96,6 +101,7 @@ inline int fuzz_arg_structure(const std::uint8_t* data, std::size_t size) {
     exercise_matching(graph, deserialize_arg(base));
   } catch (const Error&) {
   }
+  check_packed_reader(bytes, deserialize_arg(bases[(pick + 1) % bases.size()]));
   return 0;
 }
 

@@ -4,14 +4,19 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 
 #include "common/errors.hpp"
 #include "common/limits.hpp"
+#include "graph/serialize.hpp"
 #include "io/read_mesh.hpp"
+#include "match/match_prep.hpp"
+#include "match/packed_graph.hpp"
 #include "match/similarity.hpp"
+#include "match/weights.hpp"
 #include "mesh/mesh.hpp"
 
 namespace arg::fuzz {
@@ -94,6 +99,41 @@ inline void exercise_matching(const ArgGraph& graph, const ArgGraph& other) {
   (void)arg_similarity(other, graph);
   (void)arg_similarity(graph, graph);
   (void)part_match(graph, graph.levels(), 0, other);
+}
+
+// A ranking's row reader (match/packed_graph.hpp) refuses what the full reader without the
+// digest refuses, with the same message, and what it reads compares with `query` (a value read
+// from bytes, so it has sim keys; another model, so that the heads differ) exactly as the
+// decoded graph does, under weights with and without Tung's rule and with other mixes.
+inline void check_packed_reader(std::string_view bytes, const ArgGraph& query) {
+  std::string full_error, packed_error;
+  ArgGraph decoded;
+  try {
+    deserialize_arg_into(bytes, decoded, /*check_digest=*/false);
+  } catch (const Error& e) {
+    full_error = e.what();
+  }
+  for (const char* preset : {"arg", "graph", "shape"}) {
+    const Weights w = weights_preset(preset);
+    PackedGraph row;
+    bool packed = false;
+    packed_error.clear();
+    try {
+      packed = read_packed_graph(bytes, w, row);
+    } catch (const Error& e) {
+      packed_error = e.what();
+    }
+    if (!packed_error.empty()) ARG_FUZZ_CHECK(packed_error == full_error);
+    if (!packed) return;  // a format other than 3, or colour: only its header was read
+    ARG_FUZZ_CHECK(full_error.empty());
+    MatchPrep prep;
+    prepare_match(query, w, prep);
+    double sim = -1;
+    if (packed_similarity(query, &prep, row, w, sim)) {
+      const double whole = arg_similarity(query, decoded, w, nullptr, &prep, nullptr);
+      ARG_FUZZ_CHECK(std::memcmp(&sim, &whole, sizeof sim) == 0);
+    }
+  }
 }
 
 }  // namespace arg::fuzz

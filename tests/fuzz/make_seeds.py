@@ -697,8 +697,8 @@ def arg_seeds():
     put("fuzz_arg_text", "non_canonical_padding.txt", "arg1:QR==")
     put("fuzz_arg_text", "whitespace.txt", "arg1: " + base64.b64encode(some).decode())
 
-    # fuzz_arg_structure: byte 0 picks the base graph (bit 7: refresh the declared size), then
-    # patches [offset u16 LE][length u8][bytes].
+    # fuzz_arg_structure: byte 0 picks the base graph (bit 6: without colour; bit 7: refresh the
+    # declared size), then patches [offset u16 LE][length u8][bytes].
     t = "fuzz_arg_structure"
 
     def patch(offset, data):
@@ -707,6 +707,7 @@ def arg_seeds():
     node = 2 + 2 + 4 * 5 + 4 * 8 + 4 * (8 + 16 + 24)
     for base in range(4):
         put(t, "base_%d" % base, bytes([base]))
+        put(t, "base_%d" % (base + 4), bytes([0x40 | base]))
     put(t, "node0_level_1", b"\x00" + patch(header, b"\x01\x00"))
     put(t, "node1_parent_minus_1", b"\x01" + patch(header + node + 4, b"\xff\xff\xff\xff"))
     put(t, "node1_adjacency_huge", b"\x01" + patch(header + node + 20, b"\x00\x00\x00\x40"))

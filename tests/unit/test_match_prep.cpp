@@ -1,8 +1,10 @@
 // MatchPrep: comparing with a graph's prepared parts gives the same bits as without them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <map>
+#include <utility>
 #include <vector>
 
 #include "match/match_prep.hpp"
@@ -157,4 +159,23 @@ TEST(MatchPrep, BranchesAreTheChainsTheMatcherUsedToWalk) {
     for (const auto& o : only) forks += o[0] < 0 || o[1] < 0;
   }
   EXPECT_GT(forks, 0);  // the models do fork and end: chains are not whole levels
+}
+
+TEST(MatchPrep, LevelOrderIsBySelfSimThenIndex) {
+  // prepare_order sorts integer keys; the order must be that of (-self, index) pairs, ties,
+  // both zeros, negative sims (weights given in code) and extremes included.
+  MatchPrep::Sums sums;
+  sums.self = {0.5, -0.0, 0.0, 2.0, 0.5, -1.5, 1e-300, -1e-300, 1e300, 0.5, -1.5, 3.0};
+  const std::vector<std::uint32_t> level_begin = {0, 1, 5, 12};
+  prepare_order(level_begin, 2, sums);  // levels 0 to 2
+  std::vector<int> expected;
+  for (std::size_t r = 0; r + 1 < level_begin.size(); ++r) {
+    std::vector<std::pair<double, int>> keyed;
+    for (std::uint32_t i = level_begin[r]; i < level_begin[r + 1]; ++i)
+      keyed.push_back({-sums.self[i], int(i)});
+    std::sort(keyed.begin(), keyed.end());
+    for (const auto& k : keyed) expected.push_back(k.second);
+  }
+  EXPECT_EQ(sums.order, expected);
+  EXPECT_EQ(sums.order, (std::vector<int>{0, 3, 4, 1, 2, 8, 11, 9, 6, 7, 5, 10}));
 }

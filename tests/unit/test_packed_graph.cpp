@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -142,7 +143,8 @@ TEST(PackedGraph, WhatNeedsNodeRecordsIsLeftToTheDecodedPath) {
   EXPECT_FALSE(packed_similarity(q, &prep, row, w, sim));
   EXPECT_FALSE(packed_similarity(q, nullptr, row, w, sim));
   // A head without its prep never reaches node records: matching refuses it.
-  EXPECT_THROW(match_graphs(q, nullptr, row.head, nullptr, w), InputError);
+  EXPECT_THROW(match_graphs(q, nullptr, row.head, nullptr, w), std::logic_error);
+  EXPECT_THROW(arg_similarity(q, row.head, w, nullptr, &prep, &row.prep), std::logic_error);
 }
 
 TEST(PackedGraph, RefusesWhatTheFullReaderRefuses) {
