@@ -44,7 +44,7 @@ done
 run -c 'VACUUM ANALYZE rows_a' -c 'VACUUM ANALYZE rows_b'
 # Three rankings a backend, the first dropped: a new backend's first ranking also maps every
 # shared buffer it reads into its address space (a minor page fault per 4 kB page without huge
-# pages), which cost as much again as the ranking here (473 against 280 ms for 10,000 rows); a
+# pages), which cost 70% more here (473 against 280 ms for 10,000 rows); a
 # pooled connection pays it once.
 for ((r = 0; r < repeats; ++r)); do
   for side in a b; do

@@ -50,11 +50,16 @@ RESET arg.query_cache;
 -- A ranking reads each row straight into the matcher's keys (format 3 without colour) once its
 -- query repeats: the same scores to the bit as reading every row whole (the cache off), for
 -- the weights that read node records (mrg groups nodes) and those that do not.
+-- The generated meshes colour their faces: the colour is taken off all but variant 3's, whose
+-- rows take the decoded path.
 CREATE TABLE ranked AS
 SELECT row_number() OVER (ORDER BY c, v)::int AS id, c AS class,
-       arg_build(arg_generate_model(c, v, 16)) AS descr
+       arg_build(CASE WHEN v = 3 THEN m ELSE convert_to(regexp_replace(convert_from(m, 'UTF8'),
+                 '^(3 \d+ \d+ \d+) \d+ \d+ \d+$', '\1', 'gn'), 'UTF8') END) AS descr
 FROM unnest(ARRAY['cup', 'vase', 'chair', 'human', 'fourleg', 'octopus']) AS c,
-     generate_series(0, 3) AS v;
+     generate_series(0, 3) AS v, arg_generate_model(c, v, 16) AS m;
+SELECT count(*) AS rows, count(*) FILTER (WHERE (arg_info(descr)->>'has_colour')::bool) AS coloured
+FROM ranked;
 -- Each query and weights rank every row: the row varies call after call, the query repeats.
 CREATE FUNCTION pg_temp.scores(qid int, w text)
 RETURNS TABLE (id int, sim bytea, dist bytea) LANGUAGE sql AS $$

@@ -242,6 +242,7 @@ void read_compact_nodes(ByteReader& in, ArgGraph& g, std::uint32_t edges) {
                 n.curv_gauss.data());
   }
   link_read_graph(g, records.pairs, b.fill);
+  records.records = nullptr;  // it pointed into the value read
 }
 
 void write_compact_colour(const ArgGraph& g, ByteWriter& out) {

@@ -14,8 +14,11 @@ namespace arg {
 
 // [0, 1] in 65,535 steps (areas, lengths, volumes): 1.5e-5, far below what SIM resolves.
 std::uint16_t quantise_unit16(float x);
+// float(q / 65535.0), multiplied rather than divided (three a node on every row of a ranking,
+// and a division was a tenth of reading a row): the same float for every code, which
+// test_quantise.cpp checks code by code.
 inline float unit16_value(std::uint16_t q) {
-  return float(q / 65535.0);
+  return float(q * (1.0 / 65535.0));
 }
 
 // [lo, hi] in 255 steps, clamped (angles, the barycentre's radius, a node's mu range).

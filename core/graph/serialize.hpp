@@ -45,6 +45,7 @@ void deserialize_arg_into(std::string_view bytes, ArgGraph& graph, bool check_di
 // node (a ranking's row, match/packed_graph.hpp). Returns false, having read only the header,
 // for other values: read them whole. Throws InputError as deserialize_arg does.
 bool read_compact_value(std::string_view bytes, ArgGraph& head, CompactRecords& nodes);
+
 // Only the checks, no copy.
 void validate_arg_bytes(std::string_view bytes);
 

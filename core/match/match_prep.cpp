@@ -88,7 +88,7 @@ namespace {
 // Orders doubles as integers: larger self sims first (their bits, made monotonic over the sign
 // and complemented), -0 as +0, so that the keys sort as (-self, index) pairs would.
 std::uint64_t descending(double x) {
-  x += 0.0;  // -0 to +0
+  if (x == 0) x = 0;  // -0 to +0
   std::uint64_t bits;
   std::memcpy(&bits, &x, sizeof bits);
   const std::uint64_t ascending = (bits >> 63) != 0 ? ~bits : bits | (std::uint64_t(1) << 63);

@@ -128,7 +128,7 @@ void fill_interval_begin(int b, int e, int r, IntervalOf&& interval_of, int* out
 }
 // A node's place in its level's order: its self sim, then its index, in one integer (sorting
 // these took 0.7 of the time of sorting (double, int) pairs).
-__extension__ typedef unsigned __int128 OrderKey;
+using OrderKey = unsigned __int128;
 // `keyed` (optional) is scratch space kept by a caller that prepares many graphs.
 void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out,
                   std::vector<OrderKey>* keyed = nullptr);

@@ -1,7 +1,6 @@
 // Reading a row's keys, sim keys, links and self sims straight from format 3's records.
 #include "match/packed_graph.hpp"
 
-#include <algorithm>
 #include <array>
 #include <cstring>
 #include <vector>

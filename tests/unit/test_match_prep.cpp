@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <map>
 #include <utility>
 #include <vector>
@@ -165,8 +166,11 @@ TEST(MatchPrep, LevelOrderIsBySelfSimThenIndex) {
   // prepare_order sorts integer keys; the order must be that of (-self, index) pairs, ties,
   // both zeros, negative sims (weights given in code) and extremes included.
   MatchPrep::Sums sums;
-  sums.self = {0.5, -0.0, 0.0, 2.0, 0.5, -1.5, 1e-300, -1e-300, 1e300, 0.5, -1.5, 3.0};
-  const std::vector<std::uint32_t> level_begin = {0, 1, 5, 12};
+  const double tiny = std::numeric_limits<double>::denorm_min(),
+               inf = std::numeric_limits<double>::infinity();
+  sums.self = {0.5,   -0.0, 0.0,  2.0, 0.5,  -1.5,  1e-300, -1e-300,
+               1e300, 0.5,  -1.5, 3.0, tiny, -tiny, inf,    -inf};
+  const std::vector<std::uint32_t> level_begin = {0, 1, 5, 16};
   prepare_order(level_begin, 2, sums);  // levels 0 to 2
   std::vector<int> expected;
   for (std::size_t r = 0; r + 1 < level_begin.size(); ++r) {
@@ -177,5 +181,5 @@ TEST(MatchPrep, LevelOrderIsBySelfSimThenIndex) {
     for (const auto& k : keyed) expected.push_back(k.second);
   }
   EXPECT_EQ(sums.order, expected);
-  EXPECT_EQ(sums.order, (std::vector<int>{0, 3, 4, 1, 2, 8, 11, 9, 6, 7, 5, 10}));
+  EXPECT_EQ(sums.order, (std::vector<int>{0, 3, 4, 1, 2, 14, 8, 11, 9, 6, 12, 13, 7, 5, 10, 15}));
 }

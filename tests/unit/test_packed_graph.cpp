@@ -43,7 +43,7 @@ bool same_bits(double x, double y) {
   return std::memcmp(&x, &y, sizeof x) == 0;
 }
 
-const char* kPresets[] = {"arg", "mrg", "graph", "shape"};
+const char* kPresets[] = {"arg", "mrg", "graph", "shape", "colour"};
 
 }  // namespace
 
@@ -113,6 +113,8 @@ TEST(PackedGraph, SimilarityIsArgSimilarityBitForBit) {
         if (same) continue;
         EXPECT_TRUE(same_bits(sim, arg_similarity(q, b, w, nullptr, &prep, nullptr)))
             << preset << " " << sim;
+        // A ranking's query is mostly the second argument: SIM is symmetric to the bit.
+        EXPECT_TRUE(same_bits(sim, arg_similarity(b, q, w, nullptr, nullptr, &prep))) << preset;
         ++compared;
       }
     }

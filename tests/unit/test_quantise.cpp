@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <random>
 
 #include "graph/quantise.hpp"
@@ -17,6 +18,14 @@ TEST(Quantise, EveryTwoByteCodeComesBack) {
   EXPECT_EQ(quantise_unit16(2.0f), 65535);
   EXPECT_EQ(quantise_unit16(std::nanf("")), 0);
   EXPECT_NEAR(unit16_value(quantise_unit16(0.123456f)), 0.123456f, 0.5 / 65535 + 1e-7);
+}
+
+TEST(Quantise, TwoByteCodesDecodeAsTheirQuotient) {
+  // unit16_value multiplies by 1/65535: stored values read as they were written, q / 65535.
+  for (unsigned q = 0; q <= 65535; ++q) {
+    const float got = unit16_value(std::uint16_t(q)), want = float(q / 65535.0);
+    ASSERT_EQ(std::memcmp(&got, &want, sizeof got), 0) << q;
+  }
 }
 
 TEST(Quantise, EveryByteCodeComesBackOnEveryRange) {
