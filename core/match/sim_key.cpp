@@ -13,18 +13,22 @@ namespace arg {
 // The argument above needs each product rounded to a float (not held in x87 registers).
 static_assert(FLT_EVAL_METHOD == 0, "float arithmetic in float");
 
+static_assert(kCurvatureBins <= kCordBins, "codes_of decodes into kCordBins floats");
+
 namespace {
 
-// Codes of `count` bins under `step`, when each bin is exactly float(code) * step.
-bool codes_of(const float* bins, std::size_t count, float step, std::uint8_t* out) {
+// Codes of `count` (at most kCordBins) bins of a histogram of `total`, when format 3's decoder
+// (bins_values) gives the bins back exactly from them.
+bool codes_of(const float* bins, std::size_t count, float total, std::uint8_t* out) {
+  const float step = code_step(total);
   for (std::size_t k = 0; k < count; ++k) {
     const float q = step > 0 ? std::nearbyint(bins[k] / step) : 0.0f;
     if (!(q >= 0.0f && q <= 255.0f)) return false;
     out[k] = std::uint8_t(q);
-    const float back = float(out[k]) * step;
-    if (std::memcmp(&back, &bins[k], sizeof back) != 0) return false;
   }
-  return true;
+  float back[kCordBins];
+  bins_values(out, count, total, back);
+  return std::memcmp(back, bins, sizeof(float) * count) == 0;
 }
 
 // histogram_min over codes: the same float bins and the same sum, in any order. With
@@ -52,9 +56,9 @@ bool make_sim_keys(const ArgGraph& g, std::vector<SimKey>& out) {
     SimKey& k = out[i];
     k.a = n.a, k.l = n.l, k.v = n.v, k.step = code_step(n.a);
     std::uint8_t* code = k.code.data();
-    if (!codes_of(n.cords.data(), kCordBins, k.step, code) ||
-        !codes_of(n.curv_mean.data(), kCurvatureBins, k.step, code + kCordBins) ||
-        !codes_of(n.curv_gauss.data(), kCurvatureBins, k.step, code + kCordBins + kCurvatureBins)) {
+    if (!codes_of(n.cords.data(), kCordBins, n.a, code) ||
+        !codes_of(n.curv_mean.data(), kCurvatureBins, n.a, code + kCordBins) ||
+        !codes_of(n.curv_gauss.data(), kCurvatureBins, n.a, code + kCordBins + kCurvatureBins)) {
       out.clear();
       return false;
     }
