@@ -1,7 +1,9 @@
 -- arg 0.1.0 to 0.2.0: comparing refuses ARGs of other builder versions or options, and
 -- arg_rebuild_needed finds the values to build again. Values stored by 0.1.0 (binary format 1,
 -- builder 1.0) still read and compare with each other; docs/REFERENCE.md "Upgrading" says how
--- to rebuild them.
+-- to rebuild them. arg_global holds other values than 0.1.0's (92 numbers that see the
+-- panorama and the spectrum, not 98 level sums): REINDEX indexes on it and recompute stored
+-- descriptor columns after the update (the same section).
 
 -- complain if script is sourced in psql, rather than via ALTER EXTENSION
 \echo Use "ALTER EXTENSION arg UPDATE TO '0.2.0'" to load this file. \quit
@@ -17,6 +19,9 @@ COMMENT ON FUNCTION arg_build(bytea, text) IS
 
 COMMENT ON FUNCTION arg_sim(arg, arg, arg_weights) IS
   'SIM(a, b) in [0, 1], 0 for the same shape, symmetric; error 22023 for ARGs of other builder versions or options';
+
+COMMENT ON FUNCTION arg_global_vector(arg) IS
+  'the 92-value global descriptor of an ARG (the panorama''s lowest frequencies, eigenvalues and level sums), for candidate search';
 
 COMMENT ON FUNCTION arg_info(arg) IS
   'levels, nodes per level, genus estimate, triangles, build options, builder version and format version of an ARG';

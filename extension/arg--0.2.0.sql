@@ -274,8 +274,9 @@ COMMENT ON FUNCTION arg_version() IS 'version of the arg extension and of the bi
 
 -- Large catalogues: two-stage search ----------------------------------------------------------
 --
--- A compact global descriptor per ARG (98 values of the core's search descriptor: weighted level
--- sums of curvature, cords, node counts, the largest node areas and colour) as a cube point,
+-- A compact global descriptor per ARG (92 values of the core's search descriptor: the panorama's
+-- lowest frequencies, the log of the first eigenvalues, curvature, node counts, the largest node
+-- areas and colour, each block scaled as SIM weighs it) as a cube point,
 -- so that a GiST index (contrib cube; with btree_gist for filter columns) returns candidates in
 -- order of the taxicab distance <#>, which arg_sim then ranks exactly:
 --
@@ -285,19 +286,19 @@ COMMENT ON FUNCTION arg_version() IS 'version of the arg extension and of the bi
 --     ORDER BY arg_global(descr) <#> arg_global($1) LIMIT 1000)
 --   SELECT id, descr <~> $1 AS sim FROM candidates ORDER BY sim LIMIT 10;
 --
--- In 98 dimensions GiST boxes overlap and a KNN scan reads much of the index; scanning a stored
+-- In 92 dimensions GiST boxes overlap and a KNN scan reads much of the index; scanning a stored
 -- column (glob cube GENERATED ALWAYS AS (arg_global(descr)) STORED; ORDER BY glob <#> ...) is
 -- faster for hundreds of candidates (docs/BENCHMARKS.md "Scale").
 --
--- Taxicab rather than Euclidean: SIM's numerator sums bin-wise minima, and |x - y| =
--- x + y - 2 min(x, y), so the taxicab distance of two level sums is what their minima lose
--- (README "Large catalogues"; docs/BENCHMARKS.md "Scale" for the recall of each).
+-- Taxicab rather than Euclidean: SIM sums bin-wise minima of histograms and the panorama's
+-- distance is a taxicab one; on the labelled sets it finds more of SIM's nearest (README
+-- "Large catalogues"; docs/BENCHMARKS.md "Descriptor choice" for the recall of each).
 
 CREATE FUNCTION arg_global_vector(arg) RETURNS float8[]
   AS 'MODULE_PATHNAME', 'arg_global_vector' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 1600;
 
 COMMENT ON FUNCTION arg_global_vector(arg) IS
-  'the 98-value global descriptor of an ARG (weighted level sums of its features), for candidate search';
+  'the 92-value global descriptor of an ARG (the panorama''s lowest frequencies, eigenvalues and level sums), for candidate search';
 
 -- A C function rather than SQL over cube(float8[]): no search_path lookup at run time (an index
 -- expression must also work where pg_restore empties the search_path), one call per row. The

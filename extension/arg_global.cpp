@@ -1,13 +1,10 @@
 // The compact global descriptor of an ARG for two-stage search: arg_global_vector (float8[])
 // and arg_global (a cube point, for a GiST index ordered by the taxicab distance <#>).
 //
-// The values are the core's search_descriptor (weighted level sums of what SIM compares:
-// curvature, per-level cords histograms, volumes and node counts, the largest node areas of
-// levels 1..3, colour) less the blocks that tell models apart the least, so that they fit in
-// contrib/cube's 100 dimensions: the relative volume of each level (it sums to about the same
-// on every closed mesh) and the level-0 cords (they repeat level 1's on most models). Measured
-// on SHREC 2007 and on generated models (tests/scale/descriptor_study.sh), dropping them leaves
-// the recall of two-stage search within 0.001 of the whole descriptor's.
+// The values are the core's search_descriptor: what SIM weighs most (the panorama's lowest
+// frequencies, the spectrum, curvature, node counts and the largest node areas, colour) in 92
+// numbers, within contrib/cube's 100 dimensions.
+#include <algorithm>
 #include <array>
 
 #include "graph/search_descriptor.hpp"
@@ -23,28 +20,7 @@ extern "C" {
 
 namespace {
 
-// The layout search_descriptor writes: curvature (mean, Gaussian), then per level the cords
-// histogram, the volume and the node count, then 4 areas of levels 1..3, then colour.
-constexpr int kCurvatureDims = 2 * arg::kCurvatureBins;
-constexpr int kLevelDims = arg::kCordBins + 2;
-static_assert(arg::kSearchDims ==
-                  kCurvatureDims + arg::kSearchLevels * kLevelDims + 3 * 4 + 3 * arg::kColourBins,
-              "search_descriptor's layout changed: update the kept dimensions");
-
-constexpr bool kept(int k) {
-  if (k < kCurvatureDims || k >= kCurvatureDims + arg::kSearchLevels * kLevelDims) return true;
-  const int level = (k - kCurvatureDims) / kLevelDims, within = (k - kCurvatureDims) % kLevelDims;
-  if (within == arg::kCordBins) return false;  // the level's volume
-  return !(level == 0 && within < arg::kCordBins);
-}
-
-constexpr int count_kept() {
-  int n = 0;
-  for (int k = 0; k < arg::kSearchDims; ++k) n += kept(k);
-  return n;
-}
-
-constexpr int kCubeDims = count_kept();  // 98
+constexpr int kCubeDims = arg::kSearchDims;  // 92
 static_assert(kCubeDims <= CUBE_MAX_DIM, "the descriptor must fit in a cube");
 
 using Global = std::array<double, kCubeDims>;
@@ -56,9 +32,7 @@ Global descriptor_of(FunctionCallInfo fcinfo) {
   argpg::Outcome out = argpg::guarded([&] {
     const std::array<float, arg::kSearchDims> f =
         arg::search_descriptor(arg::deserialize_arg(argpg::view(value), /*check_digest=*/false));
-    std::size_t j = 0;
-    for (int k = 0; k < arg::kSearchDims; ++k)
-      if (kept(k)) d[j++] = double(f[std::size_t(k)]);
+    std::copy(f.begin(), f.end(), d.begin());
   });
   argpg::raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot read ARG");
   return d;
@@ -71,7 +45,7 @@ extern "C" {
 PG_FUNCTION_INFO_V1(arg_global_vector);
 PG_FUNCTION_INFO_V1(arg_global);
 
-// arg_global_vector(arg) RETURNS float8[]: the 98 values of the descriptor.
+// arg_global_vector(arg) RETURNS float8[]: the 92 values of the descriptor.
 Datum arg_global_vector(PG_FUNCTION_ARGS) {
   const Global d = descriptor_of(fcinfo);
   Datum elems[kCubeDims];

@@ -150,29 +150,30 @@ int main(int argc, char** argv) {
       if (!drop(k)) v.push_back(k);
     return v;
   };
-  // Layout: 16 curvature, then per level r (0..5) 8 cords, volume, count; 12 areas; 24 colour.
-  auto is_volume = [](int k) { return k >= 16 && k < 76 && (k - 16) % 10 == 8; };
-  auto is_count = [](int k) { return k >= 16 && k < 76 && (k - 16) % 10 == 9; };
-  auto is_level0_cords = [](int k) { return k >= 16 && k < 24; };
+  // Blocks of search_descriptor.hpp, in order: each variant leaves one out.
+  struct Block {
+    const char* name;
+    int size;
+  };
+  const Block blocks[] = {
+      {"curvature", 2 * arg::kCurvatureBins},
+      {"node counts", arg::kSearchLevels},
+      {"largest areas", 3 * 4},
+      {"panorama", arg::kSearchViews * (arg::kSearchAngular + 1) * (arg::kSearchAxial + 1)},
+      {"eigenvalues", arg::kSearchEigen},
+      {"colour", 3 * arg::kSearchColourBins}};
   struct Variant {
     std::string name;
     std::vector<int> dims;
     int norm;  // 1 taxicab, 2 Euclidean
   };
-  std::vector<Variant> variants = {
-      {"all, taxicab", all, 1},
-      {"all, Euclidean", all, 2},
-      {"no volume, no count, taxicab", without([&](int k) { return is_volume(k) || is_count(k); }),
-       1},
-      {"no volume, no count, Euclidean",
-       without([&](int k) { return is_volume(k) || is_count(k); }), 2},
-      {"no volume, no level-0 cords, taxicab",
-       without([&](int k) { return is_volume(k) || is_level0_cords(k); }), 1},
-      {"no volume, no level-0 cords, Euclidean",
-       without([&](int k) { return is_volume(k) || is_level0_cords(k); }), 2},
-      {"no count, no level-0 cords, taxicab",
-       without([&](int k) { return is_count(k) || is_level0_cords(k); }), 1},
-  };
+  std::vector<Variant> variants = {{"all, taxicab", all, 1}, {"all, Euclidean", all, 2}};
+  for (int b = 0, begin = 0; b < int(std::size(blocks)); begin += blocks[b++].size) {
+    const int end = begin + blocks[b].size;
+    if (blocks[b].name == std::string("colour")) continue;  // no labelled set has colour
+    variants.push_back({std::string("without ") + blocks[b].name + ", taxicab",
+                        without([&](int k) { return k >= begin && k < end; }), 1});
+  }
   std::vector<int> cands;
   for (int c : {10, 20, 50, 100, 200, 500, 1000, 3000})
     if (std::size_t(c) < n) cands.push_back(c);

@@ -1,17 +1,52 @@
 #!/usr/bin/env bash
-# Builds and runs tests/scale/descriptor_study.cpp against the core library of the CMake build:
-# recall@10 of two-stage search per descriptor variant and candidate count, and the tightness
-# of the level-sum lower bound of SIM. Not a test; the numbers go to docs/BENCHMARKS.md "Scale".
-#
-#   tests/scale/descriptor_study.sh FILE.copy [MAX_MODELS]    (FILE from argtool scale-gen)
+# Builds and runs the first stage's studies against the core library of the CMake build (not
+# tests; the numbers go to docs/BENCHMARKS.md "Descriptor choice"):
+#   tests/scale/descriptor_study.sh SET [MAX_MODELS [QUERIES]]
+#       recall@10 of two-stage search per descriptor variant and candidate count, and the
+#       tightness of the level-sum lower bound of SIM (tests/scale/descriptor_study.cpp)
+#   tests/scale/descriptor_study.sh --tune SET SET [SET ...]
+#       leave-one-set-out choice of the descriptor's block scales (descriptor_tuning.cpp)
+# SET is a COPY file from `argtool scale-gen`, or a labelled set's labels.csv (model_id,path,
+# class), built once into $BUILD_DIR/scale/NAME.copy (cached ARGs in $BUILD_DIR/arg-cache).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 build=${BUILD_DIR:-build}
 [[ -f "$build/libargmethod.a" ]] || { echo "build the core first (make build)" >&2; exit 1; }
-exe=$build/scale/descriptor_study
 mkdir -p "$build/scale"
-if [[ ! -x "$exe" || tests/scale/descriptor_study.cpp -nt "$exe" || "$build/libargmethod.a" -nt "$exe" ]]; then
-  g++ -std=c++17 -O2 -pthread -Icore -I/usr/include/eigen3 -D_USE_MATH_DEFINES \
-    tests/scale/descriptor_study.cpp "$build/libargmethod.a" -lOpenMeshCore -o "$exe"
+
+compile() {  # NAME
+  local exe=$build/scale/$1
+  if [[ ! -x "$exe" || tests/scale/$1.cpp -nt "$exe" || "$build/libargmethod.a" -nt "$exe" ]]; then
+    g++ -std=c++17 -O2 -pthread -Icore -I/usr/include/eigen3 -D_USE_MATH_DEFINES \
+      "tests/scale/$1.cpp" "$build/libargmethod.a" -lOpenMeshCore -o "$exe"
+  fi
+  echo "$exe"
+}
+
+# A labels CSV becomes COPY rows; scale-gen wants integer ids, so rows are numbered in order.
+copy_of() {  # SET
+  if [[ "$1" != *.csv ]]; then echo "$1"; return; fi
+  local dir name out labels
+  dir=$(cd "$(dirname "$1")" && pwd)
+  name=$(basename "$dir")
+  out=$build/scale/$name.copy
+  if [[ ! -s "$out" ]]; then
+    labels=$build/scale/$name.numbered.csv
+    awk -F, -v d="$dir" 'NR == 1 { print; next } { print NR - 1 "," d "/" $2 "," $3 }' "$1" >"$labels"
+    "$build/argtool" scale-gen --labels "$labels" --cache "$build/arg-cache" --out "$out" >&2
+  fi
+  echo "$out"
+}
+
+if [[ "${1:-}" == --tune ]]; then
+  shift
+  exe=$(compile descriptor_tuning)
+  files=()
+  for s in "$@"; do files+=("$(copy_of "$s")"); done
+  "$exe" "${files[@]}"
+else
+  exe=$(compile descriptor_study)
+  file=$(copy_of "$1")
+  shift
+  "$exe" "$file" "$@"
 fi
-"$exe" "$@"

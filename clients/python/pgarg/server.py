@@ -32,7 +32,7 @@ def info(conn: psycopg.Connection[Any], value: Arg) -> Dict[str, Any]:
 
 
 def global_vector(conn: psycopg.Connection[Any], value: Arg) -> "np.ndarray[Any, np.dtype[np.float64]]":
-    """The server's ``arg_global_vector``: the 98-value global descriptor as a float64 array.
+    """The server's ``arg_global_vector``: the 92-value global descriptor as a float64 array.
 
     For a whole table, select ``arg_global_vector(descr)`` and stack the rows with
     ``numpy.array(rows, dtype=numpy.float64)``.

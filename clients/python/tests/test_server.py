@@ -53,7 +53,7 @@ def test_info_is_the_servers_json(conn: psycopg.Connection[Any], meshes: Dict[st
 def test_global_vector_is_a_float64_array(conn: psycopg.Connection[Any], meshes: Dict[str, bytes]) -> None:
     value = pgarg.build(conn, meshes["chair_1.off"])
     vector = pgarg.global_vector(conn, value)
-    assert isinstance(vector, np.ndarray) and vector.dtype == np.float64 and vector.shape == (98,)
+    assert isinstance(vector, np.ndarray) and vector.dtype == np.float64 and vector.shape == (92,)
     server = conn.execute("SELECT array_agg(x::text ORDER BY i) FROM unnest(arg_global_vector(%s)) "
                           "WITH ORDINALITY u(x, i)", (value,)).fetchone()[0]
     np.testing.assert_array_equal(vector, np.array([float(x) for x in server]))
