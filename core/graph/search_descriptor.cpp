@@ -55,20 +55,27 @@ std::array<float, kSearchDims> search_descriptor(const ArgGraph& g, const Weight
     areas.resize(4, 0.0f);
     for (float a : areas) d[k++] = float(kAreaScale * 2.0 * w.alpha_s * a);
   }
-  // Values without a panorama (format 1) leave zeros.
+  // Values without a panorama (format 1) leave zeros. Rankings read values without checking
+  // their sections' ranges (serialize.hpp), so nothing here may turn a bad float into NaN or an
+  // infinity that a cube would carry into an index: such numbers count as missing.
   const bool panorama = g.panorama.size() == std::size_t(kPanoramaSize);
   for (int view = 0; view < kSearchViews; ++view)
     for (int u = 0; u <= kSearchAngular; ++u)
       for (int v = 0; v <= kSearchAxial; ++v) {
         const std::size_t at = std::size_t(view * kPanoramaPerView + u * (kPanoramaAxial + 1) + v);
-        d[k++] = panorama ? float(kPanoramaScale * g.panorama[at]) : 0.0f;
+        const bool usable = panorama && std::isfinite(g.panorama[at]);
+        d[k++] = usable ? float(kPanoramaScale * g.panorama[at]) : 0.0f;
       }
-  const bool spectrum = g.spectrum.size() >= std::size_t(kSearchEigen);
+  bool spectrum = g.spectrum.size() >= std::size_t(kSearchEigen);
+  for (std::size_t e = 0; spectrum && e < std::size_t(kSearchEigen); ++e)
+    spectrum = std::isfinite(g.spectrum[e]) && g.spectrum[e] > 0;
   for (std::size_t e = 0; e < std::size_t(kSearchEigen); ++e)
     d[k++] = float(kEigenScale * (spectrum ? std::log(double(g.spectrum[e])) : kMeanLogEigen[e]));
   if (g.summary.has_colour)
-    for (std::size_t b = 0; b < root.colour.size(); b += 2)
-      d[k++] = float(w.lambda_4 * levels * (double(root.colour[b]) + root.colour[b + 1]) / 3.0);
+    for (std::size_t b = 0; b < root.colour.size(); b += 2) {
+      const double x = w.lambda_4 * levels * (double(root.colour[b]) + root.colour[b + 1]) / 3.0;
+      d[k++] = std::isfinite(x) ? float(x) : 0.0f;
+    }
   return d;
 }
 

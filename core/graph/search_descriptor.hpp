@@ -25,10 +25,11 @@ inline constexpr int kSearchDims = 2 * kCurvatureBins + kSearchLevels + 3 * 4 +
 
 // Why these: SIM is 1 part graph, 2.5 parts panorama and 0.75 parts spectrum (weights.hpp),
 // and a first stage that sees only the graph's level sums misses the whole-shape terms that
-// rank most of SIM. Chosen by recall of SIM's ten nearest among a first stage's 20 nearest,
-// tuned on two labelled sets and scored on the third (tests/scale/descriptor_study.sh and
-// docs/BENCHMARKS.md "Descriptor choice"); the graph's cords sums, which added less than 0.005
-// on every set, made room for the panorama within contrib/cube's 100 dimensions.
+// rank most of SIM. Blocks and scales chosen by recall of SIM's ten nearest among a first
+// stage's 20 nearest on the three labelled sets, and checked by tuning on two and scoring on
+// the third (tests/scale/descriptor_study.sh --tune; docs/BENCHMARKS.md "Descriptor choice");
+// the graph's cords sums, which added less than 0.005 on every set, made room for the panorama
+// within contrib/cube's 100 dimensions.
 std::array<float, kSearchDims> search_descriptor(const ArgGraph& graph,
                                                  const Weights& weights = {});
 

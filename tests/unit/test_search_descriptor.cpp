@@ -74,8 +74,14 @@ TEST(SearchDescriptor, EigenBlockIsTheLogSpectrumOrOneFillWithoutIt) {
   const auto a = search_descriptor(g), b = search_descriptor(other);
   for (int e = 0; e < kSearchEigen; ++e) {
     EXPECT_EQ(a[std::size_t(kEigenAt + e)], b[std::size_t(kEigenAt + e)]);
-    EXPECT_LT(a[std::size_t(kEigenAt + e)], 0.0f);  // eigenvalues of a unit model are below 1
+    EXPECT_LT(a[std::size_t(kEigenAt + e)], 0.0f);  // the labelled sets' mean log eigenvalue
   }
+  // A spectrum that holds a number no log can take counts as missing, not as NaN.
+  ArgGraph broken = stored(false);
+  broken.spectrum[3] = 0.0f;
+  const auto c = search_descriptor(broken);
+  for (int e = 0; e < kSearchEigen; ++e)
+    EXPECT_EQ(c[std::size_t(kEigenAt + e)], a[std::size_t(kEigenAt + e)]);
   // Nothing else moves.
   for (int k = 0; k < kEigenAt; ++k) EXPECT_EQ(a[std::size_t(k)], with[std::size_t(k)]);
 }
@@ -85,6 +91,12 @@ TEST(SearchDescriptor, ValuesWithoutPanoramaLeaveZeros) {
   g.panorama.clear();
   const auto d = search_descriptor(g);
   for (int k = kPanoramaAt; k < kEigenAt; ++k) EXPECT_EQ(d[std::size_t(k)], 0.0f);
+  // A NaN in an unchecked panorama is left out too: every value stays finite.
+  ArgGraph nan = stored(false);
+  nan.panorama[0] = std::nanf("");
+  const auto e = search_descriptor(nan);
+  for (float x : e) EXPECT_TRUE(std::isfinite(x));
+  EXPECT_EQ(e[std::size_t(kPanoramaAt)], 0.0f);
 }
 
 TEST(SearchDescriptor, ColourMergesPairsOfBins) {
