@@ -1,9 +1,9 @@
 -- arg 0.1.0 to 0.2.0: comparing refuses ARGs of other builder versions or options, and
 -- arg_rebuild_needed finds the values to build again. Values stored by 0.1.0 (binary format 1,
 -- builder 1.0) still read and compare with each other; docs/REFERENCE.md "Upgrading" says how
--- to rebuild them. arg_global holds other values than 0.1.0's (92 numbers that see the
--- panorama and the spectrum, not 98 level sums): REINDEX indexes on it and recompute stored
--- descriptor columns after the update (the same section).
+-- to rebuild them. arg_global of this library gives other values than 0.1.0's (92 numbers that
+-- see the panorama and the spectrum, not 98 level sums): REINDEX indexes on it and renew stored
+-- descriptor columns once it is installed (the same section).
 
 -- complain if script is sourced in psql, rather than via ALTER EXTENSION
 \echo Use "ALTER EXTENSION arg UPDATE TO '0.2.0'" to load this file. \quit

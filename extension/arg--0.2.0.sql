@@ -276,7 +276,7 @@ COMMENT ON FUNCTION arg_version() IS 'version of the arg extension and of the bi
 --
 -- A compact global descriptor per ARG (92 values of the core's search descriptor: the panorama's
 -- lowest frequencies, the log of the first eigenvalues, curvature, node counts, the largest node
--- areas and colour, each block scaled as SIM weighs it) as a cube point,
+-- areas and colour, each block scaled by a weight tuned on the labelled sets) as a cube point,
 -- so that a GiST index (contrib cube; with btree_gist for filter columns) returns candidates in
 -- order of the taxicab distance <#>, which arg_sim then ranks exactly:
 --

@@ -79,7 +79,7 @@ FROM arg_knn(NULL::museum_objects, 'descr', :'q');
 SHOW enable_seqscan;  -- arg_knn turns it off for its own query only
 
 -- A stored descriptor column: the first stage scans it instead of computing arg_global(descr)
--- for every row (faster than GiST in 98 dimensions, where boxes overlap; docs/BENCHMARKS.md).
+-- for every row (faster than GiST in 92 dimensions, where boxes overlap; docs/BENCHMARKS.md).
 ALTER TABLE museum_objects ADD COLUMN glob cube GENERATED ALWAYS AS (arg_global(descr)) STORED;
 SELECT count(*) AS same_answer_as_the_index
 FROM arg_knn(NULL::museum_objects, 'descr', :'q', 5, 10, descriptor => 'glob') AS a(o, sim)

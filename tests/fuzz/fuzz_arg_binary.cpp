@@ -2,11 +2,12 @@
 //
 // With the digest checked, what the reader accepts must serialise back unchanged. Without it (a
 // stored value read back, serialize.hpp), node values are not checked and mutated bytes reach the
-// structural checks directly; whatever passes them must be safe to match, and a ranking's row
-// reader must agree with it (check_packed_reader).
+// structural checks directly; whatever passes them must be safe to match and give a finite
+// search descriptor, and a ranking's row reader must agree with it (check_packed_reader).
 #include "fuzz_support.hpp"
 #include "gen/generate_models.hpp"
 #include "graph/comparable.hpp"
+#include "graph/search_descriptor.hpp"
 #include "graph/serialize.hpp"
 #include "match/similarity.hpp"
 #include "pipeline/build_arg.hpp"
@@ -43,6 +44,9 @@ inline int fuzz_arg_binary(const std::uint8_t* data, std::size_t size) {
     reseal_arg_digest(resealed);
     ARG_FUZZ_CHECK(serialize_arg(graph) == resealed);
     exercise_matching(graph, binary_reference_graph());
+    // The first stage's descriptor of a value read unchecked is finite: a cube, and an index on
+    // it, never holds a NaN or an infinity.
+    for (float x : search_descriptor(graph)) ARG_FUZZ_CHECK(std::isfinite(x));
     // Any value the reader accepts, of any format, gets a verdict and a reason that names it.
     ARG_FUZZ_CHECK(comparable(graph, binary_reference_graph()) ==
                    incomparable_reason(graph, binary_reference_graph()).empty());

@@ -9,6 +9,15 @@
 # SET is a COPY file from `argtool scale-gen`, or a labelled set's labels.csv (model_id,path,
 # class), built once into $BUILD_DIR/scale/NAME.copy (cached ARGs in $BUILD_DIR/arg-cache).
 set -euo pipefail
+shopt -s inherit_errexit  # a failed compile or build inside $(...) stops the script
+usage() { echo "usage: $0 SET [MAX_MODELS [QUERIES]] | $0 --tune SET SET [SET ...]" >&2; exit 2; }
+[[ $# -ge 1 ]] || usage
+# Paths as given, before the cd below.
+args=()
+for a in "$@"; do
+  if [[ -e "$a" ]]; then args+=("$(realpath "$a")"); else args+=("$a"); fi
+done
+set -- "${args[@]}"
 cd "$(dirname "$0")/../.."
 build=${BUILD_DIR:-build}
 [[ -f "$build/libargmethod.a" ]] || { echo "build the core first (make build)" >&2; exit 1; }
@@ -18,7 +27,7 @@ compile() {  # NAME
   local exe=$build/scale/$1
   if [[ ! -x "$exe" || tests/scale/$1.cpp -nt "$exe" || "$build/libargmethod.a" -nt "$exe" ]]; then
     g++ -std=c++17 -O2 -pthread -Icore -I/usr/include/eigen3 -D_USE_MATH_DEFINES \
-      "tests/scale/$1.cpp" "$build/libargmethod.a" -lOpenMeshCore -o "$exe"
+      "tests/scale/$1.cpp" "$build/libargmethod.a" -lOpenMeshCore -o "$exe" >&2
   fi
   echo "$exe"
 }
@@ -30,16 +39,20 @@ copy_of() {  # SET
   dir=$(cd "$(dirname "$1")" && pwd)
   name=$(basename "$dir")
   out=$build/scale/$name.copy
-  if [[ ! -s "$out" ]]; then
+  # Made again when argtool is newer (another builder); written whole or not at all (scale-gen
+  # fails when a model does not build).
+  if [[ ! -s "$out" || "$build/argtool" -nt "$out" ]]; then
     labels=$build/scale/$name.numbered.csv
     awk -F, -v d="$dir" 'NR == 1 { print; next } { print NR - 1 "," d "/" $2 "," $3 }' "$1" >"$labels"
-    "$build/argtool" scale-gen --labels "$labels" --cache "$build/arg-cache" --out "$out" >&2
+    "$build/argtool" scale-gen --labels "$labels" --cache "$build/arg-cache" --out "$out.tmp" >&2
+    mv "$out.tmp" "$out"
   fi
   echo "$out"
 }
 
-if [[ "${1:-}" == --tune ]]; then
+if [[ "$1" == --tune ]]; then
   shift
+  [[ $# -ge 2 ]] || usage
   exe=$(compile descriptor_tuning)
   files=()
   for s in "$@"; do files+=("$(copy_of "$s")"); done
