@@ -61,7 +61,7 @@ std::array<float, kSearchDims> search_descriptor(const ArgGraph& g, const Weight
            ++i)
         areas.push_back(finite_or_zero(kAreaScale * 2.0 * w.alpha_s * g.nodes[i].a * levels));
     std::sort(areas.begin(), areas.end(), std::greater<float>());
-    areas.resize(4, 0.0f);
+    areas.resize(kSearchAreas, 0.0f);
     for (float a : areas) d[k++] = a;
   }
   // Values without a panorama (format 1) leave zeros.

@@ -19,9 +19,15 @@ inline constexpr int kSearchAxial = 1;       // and along it
 inline constexpr int kSearchEigen = 10;      // eigenvalues kept
 inline constexpr int kSearchColourBins = 4;  // per channel
 inline constexpr int kSearchViews = 6;       // the panorama's views (panorama_descriptor.hpp)
-inline constexpr int kSearchDims = 2 * kCurvatureBins + kSearchLevels + 3 * 4 +
-                                   kSearchViews * (kSearchAngular + 1) * (kSearchAxial + 1) +
-                                   kSearchEigen + 3 * kSearchColourBins;  // 92
+inline constexpr int kSearchAreas = 4;       // largest node areas kept per level 1..3
+// Where each block starts; a block ends where the next starts (colour at kSearchDims).
+inline constexpr int kSearchCountsAt = 2 * kCurvatureBins;
+inline constexpr int kSearchAreasAt = kSearchCountsAt + kSearchLevels;
+inline constexpr int kSearchPanoramaAt = kSearchAreasAt + 3 * kSearchAreas;
+inline constexpr int kSearchEigenAt =
+    kSearchPanoramaAt + kSearchViews * (kSearchAngular + 1) * (kSearchAxial + 1);
+inline constexpr int kSearchColourAt = kSearchEigenAt + kSearchEigen;
+inline constexpr int kSearchDims = kSearchColourAt + 3 * kSearchColourBins;  // 92
 
 // Why these: SIM is 1 part graph, 2.5 parts panorama and 0.75 parts spectrum (weights.hpp),
 // and a first stage that sees only the graph's level sums misses the whole-shape terms that

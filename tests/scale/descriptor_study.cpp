@@ -159,27 +159,22 @@ int main(int argc, char** argv) {
   // Blocks of search_descriptor.hpp, in order: each variant leaves one out.
   struct Block {
     const char* name;
-    int size;
+    int begin, end;
   };
-  const Block blocks[] = {
-      {"curvature", 2 * arg::kCurvatureBins},
-      {"node counts", arg::kSearchLevels},
-      {"largest areas", 3 * 4},
-      {"panorama", arg::kSearchViews * (arg::kSearchAngular + 1) * (arg::kSearchAxial + 1)},
-      {"eigenvalues", arg::kSearchEigen},
-      {"colour", 3 * arg::kSearchColourBins}};
+  const Block blocks[] = {{"curvature", 0, arg::kSearchCountsAt},
+                          {"node counts", arg::kSearchCountsAt, arg::kSearchAreasAt},
+                          {"largest areas", arg::kSearchAreasAt, arg::kSearchPanoramaAt},
+                          {"panorama", arg::kSearchPanoramaAt, arg::kSearchEigenAt},
+                          {"eigenvalues", arg::kSearchEigenAt, arg::kSearchColourAt}};
   struct Variant {
     std::string name;
     std::vector<int> dims;
     int norm;  // 1 taxicab, 2 Euclidean
   };
   std::vector<Variant> variants = {{"all, taxicab", all, 1}, {"all, Euclidean", all, 2}};
-  for (int b = 0, begin = 0; b < int(std::size(blocks)); begin += blocks[b++].size) {
-    const int end = begin + blocks[b].size;
-    if (blocks[b].name == std::string("colour")) continue;  // no labelled set has colour
-    variants.push_back({std::string("without ") + blocks[b].name + ", taxicab",
-                        without([&](int k) { return k >= begin && k < end; }), 1});
-  }
+  for (const Block& b : blocks)  // colour is left in: no labelled set has colour
+    variants.push_back({std::string("without ") + b.name + ", taxicab",
+                        without([&](int k) { return k >= b.begin && k < b.end; }), 1});
   std::vector<int> cands;
   for (int c : {10, 20, 50, 100, 200, 500, 1000, 3000})
     if (std::size_t(c) < n) cands.push_back(c);

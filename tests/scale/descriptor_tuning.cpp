@@ -31,15 +31,13 @@ constexpr int kSteps = 5, kCombos = kSteps * kSteps * kSteps * kSteps;
 constexpr int kFixed = 3;  // the panorama's scale stays
 const char* kBlockNames[kBlocks] = {"curvature", "counts", "areas", "panorama", "eigenvalues"};
 
-// First and one-past-last dimension of each block (search_descriptor.hpp's order).
-std::array<std::array<int, 2>, kBlocks> block_ranges() {
-  const int sizes[kBlocks] = {
-      2 * arg::kCurvatureBins, arg::kSearchLevels, 3 * 4,
-      arg::kSearchViews * (arg::kSearchAngular + 1) * (arg::kSearchAxial + 1), arg::kSearchEigen};
-  std::array<std::array<int, 2>, kBlocks> r{};
-  for (int b = 0, at = 0; b < kBlocks; at += sizes[b++]) r[std::size_t(b)] = {at, at + sizes[b]};
-  return r;
-}
+// First and one-past-last dimension of each block (search_descriptor.hpp).
+constexpr std::array<std::array<int, 2>, kBlocks> kRanges = {
+    {{0, arg::kSearchCountsAt},
+     {arg::kSearchCountsAt, arg::kSearchAreasAt},
+     {arg::kSearchAreasAt, arg::kSearchPanoramaAt},
+     {arg::kSearchPanoramaAt, arg::kSearchEigenAt},
+     {arg::kSearchEigenAt, arg::kSearchColourAt}}};
 
 // One labelled set: each block's distance for every pair, and each model's ten nearest by SIM.
 struct Set {
@@ -67,13 +65,12 @@ Set load(const std::string& path, int threads) {
     const std::size_t i = k / n, j = k % n;
     if (i < j) sim[k] = sim[j * n + i] = arg::arg_similarity(g[i], g[j], w);  // symmetric
   });
-  const auto ranges = block_ranges();
   s.block.assign(kBlocks, std::vector<float>(n * n, 0.0f));
   for (int b = 0; b < kBlocks; ++b)
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = 0; j < n; ++j) {
         double t = 0;
-        for (int k = ranges[std::size_t(b)][0]; k < ranges[std::size_t(b)][1]; ++k)
+        for (int k = kRanges[std::size_t(b)][0]; k < kRanges[std::size_t(b)][1]; ++k)
           t += std::fabs(double(d[i][std::size_t(k)]) - d[j][std::size_t(k)]);
         s.block[std::size_t(b)][i * n + j] = float(t);
       }

@@ -16,11 +16,9 @@ using namespace arg;
 
 namespace {
 
-// Where each block starts (search_descriptor.hpp's order).
-constexpr int kCountsAt = 2 * kCurvatureBins, kAreasAt = kCountsAt + kSearchLevels,
-              kPanoramaAt = kAreasAt + 12,
-              kEigenAt = kPanoramaAt + kSearchViews * (kSearchAngular + 1) * (kSearchAxial + 1),
-              kColourAt = kEigenAt + kSearchEigen;
+// Where each block starts (search_descriptor.hpp).
+constexpr int kCountsAt = kSearchCountsAt, kPanoramaAt = kSearchPanoramaAt,
+              kEigenAt = kSearchEigenAt, kColourAt = kSearchColourAt;
 
 // Stored values, as arg_global reads them: a coloured cup and a plain human.
 const ArgGraph& stored(bool colour) {
