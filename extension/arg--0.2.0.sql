@@ -310,23 +310,74 @@ CREATE FUNCTION arg_global(arg) RETURNS cube
 COMMENT ON FUNCTION arg_global(arg) IS
   'the global descriptor as a cube point: index it with GiST and order candidates by <#> (taxicab)';
 
--- The two-stage query over any table, as one call:
+-- A search's second stage (README "Large catalogues"): what SIM reads besides the nodes (the
+-- panorama and the spectrum, as the value holds them) and the descriptor's graph blocks, about
+-- 2.6 kB. Between the descriptor's candidates and SIM, arg_sketch_distance ranks thousands of
+-- candidates in tens of milliseconds, so that SIM ranks only the few hundred nearest.
+CREATE TYPE arg_sketch;
+
+CREATE FUNCTION arg_sketch_in(cstring) RETURNS arg_sketch
+  AS 'MODULE_PATHNAME', 'arg_sketch_in' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE;
+
+CREATE FUNCTION arg_sketch_out(arg_sketch) RETURNS cstring
+  AS 'MODULE_PATHNAME', 'arg_sketch_out' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE;
+
+CREATE FUNCTION arg_sketch_recv(internal) RETURNS arg_sketch
+  AS 'MODULE_PATHNAME', 'arg_sketch_recv' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE;
+
+CREATE FUNCTION arg_sketch_send(arg_sketch) RETURNS bytea
+  AS 'MODULE_PATHNAME', 'arg_sketch_send' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE;
+
+CREATE TYPE arg_sketch (
+  INPUT = arg_sketch_in,
+  OUTPUT = arg_sketch_out,
+  RECEIVE = arg_sketch_recv,
+  SEND = arg_sketch_send,
+  INTERNALLENGTH = VARIABLE,
+  -- Out of line, uncompressed (as arg): in the row, 2.6 kB a sketch would make the heap four
+  -- times wider and the first stage's scan of every row 2.5 times slower (docs/BENCHMARKS.md
+  -- "Second stage"), for a TOAST fetch of about 8 us a candidate saved.
+  STORAGE = external
+);
+
+COMMENT ON TYPE arg_sketch IS
+  'second-stage search sketch of an ARG: panorama, spectrum and graph summary (text form: sketch1: followed by base64)';
+
+CREATE FUNCTION arg_sketch(arg) RETURNS arg_sketch
+  AS 'MODULE_PATHNAME', 'arg_sketch' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 1600;
+
+COMMENT ON FUNCTION arg_sketch(arg) IS
+  'the sketch of an ARG for the second stage of a search: store it (GENERATED ALWAYS AS (arg_sketch(descr)) STORED) and order candidates by arg_sketch_distance';
+
+CREATE FUNCTION arg_sketch_distance(a arg_sketch, b arg_sketch, weights arg_weights DEFAULT 'arg')
+  RETURNS float8
+  AS 'MODULE_PATHNAME', 'arg_sketch_distance' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 20;
+
+COMMENT ON FUNCTION arg_sketch_distance(arg_sketch, arg_sketch, arg_weights) IS
+  'SIM with its graph term replaced by a summary''s distance: the panorama and spectrum terms exactly as arg_sim weighs them; orders candidates before <~>';
+
+-- The two- or three-stage query over any table, as one call:
 --   SELECT (o).id, (o).title, sim
 --   FROM arg_knn(NULL::objects, 'descr', $1, 10, filter => '{"museum": "M7"}') AS k(o, sim);
 -- tbl: NULL cast to the table's row type (it names the table, as in jsonb_populate_record);
--- col: the arg column; candidates: how many the first stage returns for <~> to rank (default
--- 100 k, at least 1000; never fewer than k); filter: a jsonb object of column = value conditions (a JSON null means
--- IS NULL), quoted as identifiers and literals, never read as SQL; descriptor: a cube column
--- holding arg_global(col) (say GENERATED ALWAYS AS (arg_global(descr)) STORED), scanned
--- instead of computing arg_global(col) per row. Without it the candidates come from a GiST
--- index on arg_global(col) (or on (museum, arg_global(col)) with btree_gist): the function
--- turns enable_seqscan off for its query, as the planner prices each index probe like a random
--- read and would otherwise compute arg_global for every row once candidates is more than a few
--- percent of the table. Under a filter it still returns min(k, matching rows) rows. Ties in
--- sim are broken by the arg's canonical order.
+-- col: the arg column; candidates: how many the first stage returns (default 100 k, at least
+-- 1000, or with a sketch 300 k, at least 3000; never fewer than k); filter: a jsonb object of
+-- column = value conditions (a JSON null means IS NULL), quoted as identifiers and literals,
+-- never read as SQL; descriptor: a cube column holding arg_global(col) (say GENERATED ALWAYS
+-- AS (arg_global(descr)) STORED), scanned instead of computing arg_global(col) per row.
+-- Without it the candidates come from a GiST index on arg_global(col) (or on (museum,
+-- arg_global(col)) with btree_gist): the function turns enable_seqscan off for its query, as
+-- the planner prices each index probe like a random read and would otherwise compute
+-- arg_global for every row once candidates is more than a few percent of the table.
+-- sketch: an arg_sketch column holding arg_sketch(col); the candidates are then ordered by
+-- arg_sketch_distance and only the shortlist nearest (default 20 k, at least 200) are ranked
+-- by <~>, which finds SIM's nearest among many more candidates for the same time (docs/
+-- BENCHMARKS.md "Second stage"). Under a filter it still returns min(k, matching rows) rows.
+-- Ties in sim are broken by the arg's canonical order.
 CREATE FUNCTION arg_knn(tbl anyelement, col name, query arg, k int DEFAULT 10,
                         candidates int DEFAULT NULL, filter jsonb DEFAULT NULL,
-                        descriptor name DEFAULT NULL)
+                        descriptor name DEFAULT NULL, sketch name DEFAULT NULL,
+                        shortlist int DEFAULT NULL)
   RETURNS TABLE (obj anyelement, sim float8)
   LANGUAGE plpgsql STABLE
   SET search_path FROM CURRENT
@@ -334,13 +385,16 @@ CREATE FUNCTION arg_knn(tbl anyelement, col name, query arg, k int DEFAULT 10,
 AS $$
 DECLARE
   relid oid;
+  kind "char";
   conditions text := '';
   nearest text;
   gq cube;
+  sq arg_sketch;
+  stages text;
   seqscan text := current_setting('enable_seqscan');
   item record;
 BEGIN
-  SELECT c.oid INTO relid FROM pg_type t JOIN pg_class c ON c.oid = t.typrelid
+  SELECT c.oid, c.relkind INTO relid, kind FROM pg_type t JOIN pg_class c ON c.oid = t.typrelid
   WHERE t.oid = pg_typeof(tbl) AND c.relkind IN ('r', 'p', 'v', 'm', 'f');
   IF relid IS NULL THEN
     RAISE EXCEPTION 'arg_knn: tbl must be NULL cast to a table''s row type, as in NULL::objects'
@@ -348,6 +402,10 @@ BEGIN
   END IF;
   IF k IS NULL OR k < 1 THEN
     RAISE EXCEPTION 'arg_knn: k must be at least 1' USING ERRCODE = 'invalid_parameter_value';
+  END IF;
+  IF shortlist < 1 THEN
+    RAISE EXCEPTION 'arg_knn: shortlist must be at least 1'
+      USING ERRCODE = 'invalid_parameter_value';
   END IF;
   IF query IS NULL OR col IS NULL THEN
     RETURN;
@@ -363,6 +421,15 @@ BEGIN
          AND a.attnum > 0 AND NOT a.attisdropped AND a.atttypid = pg_typeof(gq)) THEN
     RAISE EXCEPTION 'arg_knn: % has no column % of type cube', relid::regclass, quote_ident(descriptor)
       USING ERRCODE = 'undefined_column';
+  END IF;
+  IF sketch IS NOT NULL THEN
+    sq := arg_sketch(query);
+    IF NOT EXISTS (
+         SELECT FROM pg_attribute a WHERE a.attrelid = relid AND a.attname = sketch
+           AND a.attnum > 0 AND NOT a.attisdropped AND a.atttypid = pg_typeof(sq)) THEN
+      RAISE EXCEPTION 'arg_knn: % has no column % of type arg_sketch', relid::regclass,
+        quote_ident(sketch) USING ERRCODE = 'undefined_column';
+    END IF;
   END IF;
   IF filter IS NOT NULL THEN
     IF jsonb_typeof(filter) <> 'object' THEN
@@ -381,19 +448,35 @@ BEGIN
   ELSE
     nearest := format('t.%I', descriptor);
   END IF;
+  IF kind IN ('r', 'm') THEN
+    -- The first stage sorts row addresses, not rows: a sort of thousands of whole rows outgrows
+    -- work_mem and spills every row of the table to disk (measured: 81 MB and 150 ms at 100,000
+    -- rows); the candidates are then fetched by address (same snapshot, same statement).
+    stages := format('SELECT t.* FROM %1$s t WHERE t.ctid = ANY (ARRAY(
+                        SELECT t.ctid FROM %1$s t WHERE t.%2$I IS NOT NULL%3$s
+                        ORDER BY %4$s <#> $2 LIMIT $3))', relid::regclass, col, conditions, nearest);
+  ELSE
+    stages := format('SELECT t.* FROM %s t WHERE t.%I IS NOT NULL%s ORDER BY %s <#> $2 LIMIT $3',
+                     relid::regclass, col, conditions, nearest);
+  END IF;
+  IF sketch IS NOT NULL THEN
+    stages := format('SELECT t.* FROM (%s) t ORDER BY arg_sketch_distance(t.%I, $5) LIMIT $6',
+                     stages, sketch);
+  END IF;
   -- The row value is formed only for the candidates, after the LIMIT: a whole-row reference
-  -- in the scan itself would detoast every ARG the first stage looks at.
+  -- in the scan itself would detoast every ARG the first stages look at.
   RETURN QUERY EXECUTE format(
     'SELECT c.r, (c.r).%1$I <~> $1 AS sim
-     FROM (SELECT ROW(s.*)::%2$s AS r
-           FROM (SELECT t.* FROM %2$s t WHERE t.%1$I IS NOT NULL%3$s
-                 ORDER BY %4$s <#> $2 LIMIT $3) s) c
+     FROM (SELECT ROW(s.*)::%2$s AS r FROM (%3$s) s) c
      ORDER BY sim, (c.r).%1$I LIMIT $4',
-    col, relid::regclass, conditions, nearest)
-  USING query, gq, greatest(coalesce(candidates, greatest(100 * k, 1000)), k), k;
+    col, relid::regclass, stages)
+  USING query, gq,
+        greatest(coalesce(candidates, CASE WHEN sketch IS NULL THEN greatest(100 * k, 1000)
+                                           ELSE greatest(300 * k, 3000) END), k),
+        k, sq, greatest(coalesce(shortlist, greatest(20 * k, 200)), k);
   PERFORM set_config('enable_seqscan', seqscan, true);
 END
 $$;
 
-COMMENT ON FUNCTION arg_knn(anyelement, name, arg, int, int, jsonb, name) IS
-  'two-stage search: the candidates nearest by arg_global (GiST index, or a stored descriptor column) by <#>, ranked exactly by <~>; returns (row, sim), best first';
+COMMENT ON FUNCTION arg_knn(anyelement, name, arg, int, int, jsonb, name, name, int) IS
+  'search in stages: the candidates nearest by arg_global (GiST index, or a stored descriptor column) by <#>, then with a stored arg_sketch column the shortlist nearest by arg_sketch_distance, ranked exactly by <~>; returns (row, sim), best first';

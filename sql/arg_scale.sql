@@ -86,6 +86,43 @@ FROM arg_knn(NULL::museum_objects, 'descr', :'q', 5, 10, descriptor => 'glob') A
 JOIN arg_knn(NULL::museum_objects, 'descr', :'q', 5, 10) AS b(o, sim)
   ON (a.o).id = (b.o).id AND a.sim = b.sim;
 
+-- The second stage: a stored sketch (SIM's panorama and spectrum as the value holds them, and
+-- the descriptor's graph blocks), out of line and uncompressed, as arg.
+ALTER TABLE museum_objects ADD COLUMN sk arg_sketch GENERATED ALWAYS AS (arg_sketch(descr)) STORED;
+SELECT attstorage AS sketch_storage FROM pg_attribute
+WHERE attrelid = 'museum_objects'::regclass AND attname = 'sk';
+SELECT count(*) AS sketches, min(octet_length(sk::text)) > 2000 AS text_over_2000_chars,
+       bool_and(sk::text = sk::text::arg_sketch::text) AS text_round_trips,
+       bool_and(arg_sketch_distance(sk, sk) = 0) AS zero_to_itself,
+       bool_and(arg_sketch_distance(sk, arg_sketch(:'q'::arg)) = arg_sketch_distance(arg_sketch(:'q'::arg), sk))
+         AS symmetric
+FROM museum_objects WHERE sk IS NOT NULL;
+-- Nearer by the sketch means more alike by SIM: the nearest of a vase are vases.
+SELECT o.id, o.class FROM museum_objects o
+WHERE o.id <> 0 AND o.sk IS NOT NULL
+ORDER BY arg_sketch_distance(o.sk, arg_sketch(:'q'::arg)), o.id LIMIT 2;
+-- Its weights are SIM's: the graph alone leaves only the graph blocks, which differ.
+SELECT arg_sketch_distance(a.sk, b.sk, 'graph=1 panorama=0 spectrum=0')
+       <> arg_sketch_distance(a.sk, b.sk) AS weights_count
+FROM museum_objects a, museum_objects b WHERE a.id = 0 AND b.id = 9;
+-- Three stages in one call: with every row a candidate and on the shortlist, brute force.
+SELECT count(*) AS three_stages_as_brute_force
+FROM arg_knn(NULL::museum_objects, 'descr', :'q', 5, 36, descriptor => 'glob', sketch => 'sk',
+             shortlist => 36) AS k(o, sim)
+JOIN brute ON brute.id = (k.o).id AND brute.sim = k.sim;
+-- A shortlist of 10 of the 36 rows still holds SIM's five nearest of this vase.
+SELECT count(*) AS five_nearest_from_a_shortlist_of_10
+FROM arg_knn(NULL::museum_objects, 'descr', :'q', 5, 36, descriptor => 'glob', sketch => 'sk',
+             shortlist => 10) AS k(o, sim)
+JOIN brute ON brute.id = (k.o).id AND brute.sim = k.sim;
+\set VERBOSITY terse
+SELECT count(*) FROM arg_knn(NULL::museum_objects, 'descr', :'q', sketch => 'glob');
+SELECT count(*) FROM arg_knn(NULL::museum_objects, 'descr', :'q', sketch => 'sk', shortlist => 0);
+SELECT 'sketch1:QUJD'::arg_sketch;
+SELECT 'arg1:QUJD'::arg_sketch;
+SELECT overlay(sk::text placing 'A' from 9 for 1)::arg_sketch FROM museum_objects WHERE id = 0;
+\set VERBOSITY default
+
 -- Under a filter it still returns k rows (when that many match), all of them matching.
 SELECT count(*) AS rows, bool_and((o).museum = 'M2') AS all_in_m2
 FROM arg_knn(NULL::museum_objects, 'descr', :'q', 5, 5, '{"museum": "M2"}') AS k(o, sim);

@@ -133,8 +133,12 @@ std::vector<float> laplace_spectrum(const Mesh& input, int count, const StopRequ
 
 double spectrum_distance(const std::vector<float>& a, const std::vector<float>& b) {
   if (a.empty() || a.size() != b.size()) return 1.0;
+  return spectrum_distance(a.data(), b.data(), a.size());
+}
+
+double spectrum_distance(const float* a, const float* b, std::size_t count) {
   double s = 0;
-  for (std::size_t k = 0; k < a.size(); ++k) {
+  for (std::size_t k = 0; k < count; ++k) {
     const double d = std::log(double(a[k])) - std::log(double(b[k]));
     s += d * d;
   }

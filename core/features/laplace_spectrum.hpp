@@ -24,5 +24,7 @@ std::vector<float> laplace_spectrum(const Mesh& mesh, int count = kSpectrumSize,
 // The Euclidean distance of the logarithms over 5, capped at 1 (unrelated models lie about 2.3
 // apart on SHREC 2007 and SHREC 2011). Either vector empty or of another size: 1.
 double spectrum_distance(const std::vector<float>& a, const std::vector<float>& b);
+// The same of two arrays of `count` (> 0) values.
+double spectrum_distance(const float* a, const float* b, std::size_t count);
 
 }  // namespace arg

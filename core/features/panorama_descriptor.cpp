@@ -113,6 +113,10 @@ std::vector<float> panorama_descriptor(const Mesh& posed) {
 
 double panorama_distance(const std::vector<float>& a, const std::vector<float>& b) {
   if (a.size() != std::size_t(kPanoramaSize) || b.size() != a.size()) return 1.0;
+  return panorama_distance(a.data(), b.data());
+}
+
+double panorama_distance(const float* a, const float* b) {
   double best = 1.0;
   for (std::size_t f = 0; f < 2; ++f) {
     const std::size_t begin = f * kPanoramaPerFrame, wavelet = begin + kPanoramaFourier,

@@ -44,5 +44,7 @@ std::vector<float> panorama_descriptor(const Mesh& posed);
 // of the two frames counts; a frame is compared with the same frame of the other model. Either
 // vector missing or of the wrong size: 1.
 double panorama_distance(const std::vector<float>& a, const std::vector<float>& b);
+// The same of two arrays of kPanoramaSize values.
+double panorama_distance(const float* a, const float* b);
 
 }  // namespace arg

@@ -13,6 +13,7 @@
 #include "features/laplace_spectrum.hpp"
 #include "features/panorama_descriptor.hpp"
 #include "graph/compact_nodes.hpp"
+#include "graph/panorama_codes.hpp"
 #include "graph/pool_fragments.hpp"
 #include "graph/quantise.hpp"
 
@@ -46,24 +47,6 @@ constexpr std::uint32_t kTagSpectrum = tag_of("SPEC");
 // Format 3: the panorama in bytes (sqrt codes by block, quantise.hpp) and the nodes' colour.
 constexpr std::uint32_t kTagPanoramaBytes = tag_of("PNQ8");
 constexpr std::uint32_t kTagColour = tag_of("COLR");
-// The panorama's blocks: per frame, each view's Fourier features, then each view's wavelet ones.
-constexpr std::size_t kPanoramaViews = 6, kPanoramaBlocks = 2 * 2 * kPanoramaViews;
-constexpr std::size_t kWaveletPerView = kPanoramaWavelet / kPanoramaViews;
-static_assert(kPanoramaFourier == kPanoramaViews * kPanoramaPerView &&
-              kPanoramaWavelet % kPanoramaViews == 0);
-
-// Calls f(offset, count) on each block of the panorama, in order.
-template <class F>
-void for_each_panorama_block(F&& f) {
-  for (std::size_t frame = 0; frame < 2; ++frame) {
-    const std::size_t begin = frame * kPanoramaPerFrame;
-    for (std::size_t v = 0; v < kPanoramaViews; ++v)
-      f(begin + v * kPanoramaPerView, kPanoramaPerView);
-    for (std::size_t v = 0; v < kPanoramaViews; ++v)
-      f(begin + kPanoramaFourier + v * kWaveletPerView, kWaveletPerView);
-  }
-}
-
 std::size_t header_size(std::uint16_t version) {
   return version == 1 ? kHeaderSize1 : version == 2 ? kHeaderSize2 : kHeaderSize3;
 }
@@ -343,24 +326,13 @@ void read_floats(ByteReader& in, std::uint32_t length, std::size_t count, const 
         fail(std::string(what) + " holds a value out of range or not finite");
 }
 
-// Format 3's panorama: a float scale per block (finite, in [0, 1]), then a byte per value.
+// Format 3's panorama (graph/panorama_codes.hpp).
 void read_panorama_bytes(ByteReader& in, std::uint32_t length, ArgGraph& g) {
-  if (length != 4 * kPanoramaBlocks + kPanoramaSize)
+  if (length != kPanoramaCodesSize)
     in.fail("panorama section of " + std::to_string(length) + " bytes, expected " +
-            std::to_string(4 * kPanoramaBlocks + kPanoramaSize));
-  float scale[kPanoramaBlocks];
-  for (float& x : scale) {
-    x = in.get<float>();
-    if (!std::isfinite(x) || x < 0 || x > 1.0001f) in.fail("panorama scale out of range");
-  }
-  const auto* q = reinterpret_cast<const std::uint8_t*>(in.get_bytes(kPanoramaSize).data());
+            std::to_string(kPanoramaCodesSize));
   g.panorama.resize(kPanoramaSize);
-  std::size_t b = 0;
-  for_each_panorama_block([&](std::size_t at, std::size_t count) {
-    if (!canonical_sqrt_block(q + at, count, scale[b]))
-      in.fail("panorama block " + std::to_string(b) + "'s codes do not match its scale");
-    sqrt_block_values(q + at, count, scale[b++], g.panorama.data() + at);
-  });
+  read_panorama_codes(in, g.panorama.data());
 }
 
 void read_sections(ByteReader& in, std::size_t end, ArgGraph& g, bool check_values) {
@@ -481,13 +453,8 @@ std::string serialize_arg(const ArgGraph& g) {
       if (g.panorama.size() != std::size_t(kPanoramaSize))
         throw InputError("ARG: panorama of " + std::to_string(g.panorama.size()) + " values");
       out.put(kTagPanoramaBytes);
-      out.put(std::uint32_t(4 * kPanoramaBlocks + kPanoramaSize));
-      std::string codes(kPanoramaSize, '\0');
-      for_each_panorama_block([&](std::size_t at, std::size_t count) {
-        out.put(quantise_sqrt_block(g.panorama.data() + at, count,
-                                    reinterpret_cast<std::uint8_t*>(&codes[at])));
-      });
-      out.put_bytes(codes);
+      out.put(std::uint32_t(kPanoramaCodesSize));
+      write_panorama_codes(g.panorama.data(), out);
     }
     section(kTagSpectrum, g.spectrum);
     if (g.summary.has_colour) {

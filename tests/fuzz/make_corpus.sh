@@ -51,9 +51,11 @@ mkdir -p "$work/arg"
   "$work/stl/torus_00.stl" > /dev/null
 
 # fuzz_arg_structure's seeds are a corpus minimised from fuzzing (committed as found, not made
-# here), so only the other targets' folders are made afresh.
+# here), and fuzz_sketch's the sketches of fuzz_arg_binary's ARG seeds as the server's
+# arg_sketch_send(arg_sketch(...)) wrote them (no tool here writes sketches), so only the other
+# targets' folders are made afresh.
 mkdir -p "$corpus"
-find "$corpus" -mindepth 1 -maxdepth 1 ! -name fuzz_arg_structure -exec rm -rf {} +
+find "$corpus" -mindepth 1 -maxdepth 1 ! -name fuzz_arg_structure ! -name fuzz_sketch -exec rm -rf {} +
 for format in off ply stl obj; do
   mkdir -p "$corpus/fuzz_read_$format"
   for c in "${classes[@]}"; do

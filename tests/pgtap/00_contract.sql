@@ -1,11 +1,15 @@
 -- The SQL contract of the extension: its objects, their signatures and their markings.
 BEGIN;
 CREATE EXTENSION IF NOT EXISTS arg CASCADE;
-SELECT plan(158);
+SELECT plan(184);
 
 SELECT has_extension('arg', 'the arg extension is installed');
 SELECT has_type('arg', 'type arg exists');
 SELECT has_type('arg_weights', 'type arg_weights exists');
+SELECT has_type('arg_sketch', 'type arg_sketch exists');
+-- A sketch is kept out of line, uncompressed: the heap stays narrow for the first stage's scan.
+SELECT is((SELECT typstorage FROM pg_type WHERE typname = 'arg_sketch'), 'e'::"char",
+          'arg_sketch is stored out of line, uncompressed');
 
 -- arg is a varlena stored out of line uncompressed; arg_weights a fixed 48 bytes; neither has a
 -- type modifier.
@@ -77,7 +81,13 @@ INSERT INTO surface VALUES
   ('arg_generate_model(text,integer,integer)', 'bytea', true),
   ('arg_global_vector(arg)', 'double precision[]', true),
   ('arg_global(arg)', 'cube', true),
-  ('arg_knn(anyelement,name,arg,integer,integer,jsonb,name)',
+  ('arg_sketch_in(cstring)', 'arg_sketch', true),
+  ('arg_sketch_out(arg_sketch)', 'cstring', true),
+  ('arg_sketch_recv(internal)', 'arg_sketch', true),
+  ('arg_sketch_send(arg_sketch)', 'bytea', true),
+  ('arg_sketch(arg)', 'arg_sketch', true),
+  ('arg_sketch_distance(arg_sketch,arg_sketch,arg_weights)', 'double precision', true),
+  ('arg_knn(anyelement,name,arg,integer,integer,jsonb,name,name,integer)',
    'TABLE(obj anyelement, sim double precision)', false),
   ('arg_index_trigger()', 'trigger', false),
   ('arg_rebuild_needed(arg)', 'boolean', false),
@@ -107,7 +117,7 @@ SELECT volatility_is('arg_version', '{}'::name[], 'stable', 'arg_version() is ST
 -- Its answer changes with the library installed, so it must not feed an index.
 SELECT volatility_is('arg_rebuild_needed', '{arg}'::name[], 'stable', 'arg_rebuild_needed(arg) is STABLE');
 SELECT is((SELECT provolatile FROM pg_proc
-           WHERE oid = 'arg_knn(anyelement,name,arg,integer,integer,jsonb,name)'::regprocedure), 's',
+           WHERE oid = 'arg_knn(anyelement,name,arg,integer,integer,jsonb,name,name,integer)'::regprocedure), 's',
           'arg_knn (it reads a table) is STABLE');
 
 -- Defaults: weights default to the arg preset (stored as its canonical text), options to none,

@@ -175,7 +175,7 @@ INSERT INTO valid SELECT 'TGA', '\x000002000000000000000000'::bytea || pg_temp.u
 CREATE TEMP TABLE pool (
   id serial PRIMARY KEY, typ regtype NOT NULL, class text NOT NULL, label text NOT NULL,
   v_bytea bytea, v_text text, v_int4 int4, v_int8 int8, v_float8 float8, v_float4 float4,
-  v_bool bool, v_arg arg, v_weights arg_weights, v_jsonb jsonb, v_name name,
+  v_bool bool, v_arg arg, v_weights arg_weights, v_jsonb jsonb, v_name name, v_sketch arg_sketch,
   v_sql text  -- an expression instead of a stored value (polymorphic arguments)
 );
 CREATE FUNCTION pg_temp.column_of(t regtype) RETURNS text LANGUAGE sql IMMUTABLE AS $$
@@ -184,7 +184,8 @@ CREATE FUNCTION pg_temp.column_of(t regtype) RETURNS text LANGUAGE sql IMMUTABLE
                 WHEN 'double precision'::regtype THEN 'v_float8' WHEN 'real'::regtype THEN 'v_float4'
                 WHEN 'boolean'::regtype THEN 'v_bool' WHEN 'arg'::regtype THEN 'v_arg'
                 WHEN 'arg_weights'::regtype THEN 'v_weights' WHEN 'jsonb'::regtype THEN 'v_jsonb'
-                WHEN 'name'::regtype THEN 'v_name' WHEN 'anyelement'::regtype THEN 'v_sql' END $$;
+                WHEN 'name'::regtype THEN 'v_name' WHEN 'anyelement'::regtype THEN 'v_sql'
+                WHEN 'arg_sketch'::regtype THEN 'v_sketch' END $$;
 -- The SQL expression for pool value `id`.
 CREATE FUNCTION pg_temp.value_sql(id int) RETURNS text LANGUAGE sql STABLE AS $$
   SELECT coalesce(v_sql, format('(SELECT %s FROM pg_temp.pool WHERE id = %s)', pg_temp.column_of(typ), id))
@@ -205,6 +206,7 @@ INSERT INTO pool (typ, class, label, v_float4) VALUES ('real', 'valid', '0.5', 0
 INSERT INTO pool (typ, class, label, v_bool) VALUES ('boolean', 'valid', 'true', true);
 INSERT INTO pool (typ, class, label, v_arg) SELECT 'arg', 'valid', 'the cup', arg_build(off) FROM model;
 INSERT INTO pool (typ, class, label, v_weights) VALUES ('arg_weights', 'valid', 'arg', 'arg');
+INSERT INTO pool (typ, class, label, v_sketch) SELECT 'arg_sketch', 'valid', 'the cup''s sketch', arg_sketch(arg_build(off)) FROM model;
 INSERT INTO pool (typ, class, label, v_jsonb) VALUES ('jsonb', 'valid', '{}', '{}');
 INSERT INTO pool (typ, class, label, v_name) VALUES ('name', 'valid', 'descr', 'descr');
 INSERT INTO pool (typ, class, label, v_sql) VALUES ('anyelement', 'valid', 'a table''s row type', 'NULL::pg_temp.knn_objects');
@@ -212,7 +214,7 @@ INSERT INTO pool (typ, class, label, v_sql) VALUES ('anyelement', 'valid', 'a ta
 -- NULL of every type.
 INSERT INTO pool (typ, class, label)
 SELECT t::regtype, 'NULL', 'NULL' FROM unnest(ARRAY['bytea', 'text', 'integer', 'bigint', 'double precision',
-  'real', 'boolean', 'arg', 'arg_weights', 'jsonb', 'name']) t;
+  'real', 'boolean', 'arg', 'arg_weights', 'jsonb', 'name', 'arg_sketch']) t;
 INSERT INTO pool (typ, class, label, v_sql) VALUES ('anyelement', 'NULL', 'NULL::text', 'NULL::text');
 
 -- Empty values.
@@ -321,6 +323,10 @@ INSERT INTO pool (typ, class, label, v_arg)
 SELECT 'arg', 'unusual', 'textured OBJ with a BMP', arg_build(m.bytes, t.bytes)
 FROM valid m, valid t WHERE m.name = 'OBJ (textured)' AND t.name = 'BMP';
 INSERT INTO knn_objects SELECT id, 'M' || id % 2, v_arg FROM pool WHERE typ = 'arg'::regtype AND class IN ('valid', 'unusual');
+-- Their sketches (some without a spectrum or a panorama part).
+INSERT INTO pool (typ, class, label, v_sketch)
+SELECT 'arg_sketch', 'unusual', label || '''s sketch', arg_sketch(v_arg) FROM pool
+WHERE typ = 'arg'::regtype AND class = 'unusual';
 
 -- Forged ARG values (superuser only): bytes relabelled as arg without input validation, as a
 -- corrupted data file or a careless C function could hand over. They skip the checks that
@@ -329,6 +335,7 @@ CREATE TEMP TABLE forged_ok AS SELECT rolsuper AS yes FROM pg_roles WHERE rolnam
 DO $$ BEGIN
   IF (SELECT yes FROM forged_ok) THEN
     CREATE CAST (bytea AS arg) WITHOUT FUNCTION;
+    CREATE CAST (bytea AS arg_sketch) WITHOUT FUNCTION;
   END IF;
 END $$;
 CREATE TEMP TABLE forged (label text, bytes bytea);
@@ -352,6 +359,28 @@ INSERT INTO forged SELECT format('%s bytes of noise', n), pg_temp.noise('forged 
 DO $$ BEGIN
   IF (SELECT yes FROM forged_ok) THEN
     EXECUTE 'INSERT INTO pg_temp.pool (typ, class, label, v_arg) SELECT ''arg'', ''forged'', label, bytes::arg FROM pg_temp.forged';
+  END IF;
+END $$;
+-- Forged sketches: the cup's cut short, words set to NaN, -1 and a huge value, bytes flipped.
+CREATE TEMP TABLE forged_sketch (label text, bytes bytea);
+INSERT INTO forged_sketch
+SELECT format('sketch cut to %s of %s bytes', cut, length(b)), substr(b, 1, cut)
+FROM (SELECT arg_sketch_send(v_sketch) AS b FROM pool WHERE class = 'valid' AND typ = 'arg_sketch'::regtype) s,
+     unnest(ARRAY[0, 1, 4, 8, 100, 192, 300, 2000, 2500]) cut WHERE cut < length(b);
+INSERT INTO forged_sketch
+SELECT format('sketch with bytes %s..%s set to %s', at, at + 3, label), overlay(b PLACING word FROM at FOR 4)
+FROM (SELECT arg_sketch_send(v_sketch) AS b FROM pool WHERE class = 'valid' AND typ = 'arg_sketch'::regtype) s,
+     (VALUES ('NaN', '\x0000c07f'::bytea), ('-1', '\xffffffff'::bytea), ('2^30', '\x00000040'::bytea)) w(label, word),
+     generate_series(1, 2600, 97) at;
+INSERT INTO forged_sketch
+SELECT format('sketch with byte %s flipped', at), set_byte(b, at, get_byte(b, at) # 255)
+FROM (SELECT arg_sketch_send(v_sketch) AS b FROM pool WHERE class = 'valid' AND typ = 'arg_sketch'::regtype) s,
+     LATERAL (SELECT (('x' || substr(md5('sketch flip' || k), 1, 8))::bit(32)::bigint % length(b))::int AS at
+              FROM generate_series(1, 64) k) p;
+INSERT INTO forged_sketch SELECT format('%s bytes of noise', n), pg_temp.noise('forged sketch ' || n, n) FROM unnest(ARRAY[3, 64, 2592]) n;
+DO $$ BEGIN
+  IF (SELECT yes FROM forged_ok) THEN
+    EXECUTE 'INSERT INTO pg_temp.pool (typ, class, label, v_sketch) SELECT ''arg_sketch'', ''forged'', label, bytes::arg_sketch FROM pg_temp.forged_sketch';
   END IF;
 END $$;
 
@@ -485,6 +514,20 @@ FROM (SELECT 1 AS n, '' AS t UNION ALL SELECT 2, 'arg1:' UNION ALL SELECT 3, 'ar
              LATERAL (SELECT (('x' || substr(md5('char' || k), 1, 6))::bit(24)::int % (length(t) - 6)) + 6 AS at) p
       UNION ALL SELECT 300, t || '=' FROM arg_text UNION ALL SELECT 301, t || E'\n' FROM arg_text
       UNION ALL SELECT 302, t || t FROM arg_text UNION ALL SELECT 303, ' ' || t FROM arg_text) s;
+-- arg_sketch text: empty, the wrong tag, noise, the valid text cut and with a character changed.
+CREATE TEMP TABLE sketch_text AS SELECT v_sketch::text AS t FROM pool WHERE class = 'valid' AND typ = 'arg_sketch'::regtype;
+INSERT INTO cases (description, queries, allowed)
+SELECT 'arg_sketch_in (text to arg_sketch) with hostile text',
+       array_agg(format('SELECT %L::arg_sketch::text IS NOT NULL', t) ORDER BY n), '^(00000|22P02)$'
+FROM (SELECT 1 AS n, '' AS t UNION ALL SELECT 2, 'sketch1:' UNION ALL SELECT 3, 'sketch1:===='
+      UNION ALL SELECT 4, 'arg1:' || substr(t, 9) FROM sketch_text
+      UNION ALL SELECT 10 + n, 'sketch1:' || encode(pg_temp.noise('sketch text ' || n, n * 3), 'base64') FROM generate_series(1, 20) n
+      UNION ALL SELECT 40 + k, 'sketch1:' || replace(encode(substr(decode(substr(t, 9), 'base64'), 1, cut), 'base64'), E'\n', '')
+        FROM sketch_text, unnest(ARRAY[1, 3, 4, 8, 9, 100, 192, 300, 2000, 2591]) WITH ORDINALITY u(cut, k)
+      UNION ALL SELECT 100 + k, overlay(t PLACING CASE WHEN substr(t, at, 1) = 'A' THEN 'B' ELSE 'A' END FROM at FOR 1)
+        FROM sketch_text, generate_series(1, 40) k,
+             LATERAL (SELECT (('x' || substr(md5('sketch char' || k), 1, 6))::bit(24)::int % (length(t) - 9)) + 9 AS at) p
+      UNION ALL SELECT 200, t || t FROM sketch_text UNION ALL SELECT 201, ' ' || t FROM sketch_text) s;
 -- arg_weights text: malformed weights.
 INSERT INTO cases (description, queries, allowed)
 SELECT 'arg_weights_in (text to arg_weights) with malformed weights',
@@ -499,6 +542,7 @@ FROM unnest(ARRAY['', ' ', 'arg mrg', 'no_such_preset', 'alpha_l', 'alpha_l=', '
 -- back into a one-column table, so arg_recv and arg_weights_recv see the bytes as a client's.
 CREATE TEMP TABLE recv_arg (v arg);
 CREATE TEMP TABLE recv_weights (v arg_weights);
+CREATE TEMP TABLE recv_sketch (v arg_sketch);
 CREATE FUNCTION pg_temp.copy_in(target text, payload bytea) RETURNS text LANGUAGE plpgsql AS $$
 DECLARE
   file text := 'arg_no_crash_' || pg_backend_pid() || '.copy';
@@ -536,6 +580,24 @@ FROM (SELECT n, pg_temp.noise('weights ' || n, n) AS b FROM generate_series(0, 5
       UNION ALL SELECT 105, overlay(arg_weights_send('arg') PLACING '\xff'::bytea FROM 45 FOR 1)
       UNION ALL SELECT 106, overlay(arg_weights_send('arg') PLACING '\x00000000000000000000000000000000'::bytea FROM 21 FOR 16)
       UNION ALL SELECT 107, arg_weights_send('mrg')) s;
+INSERT INTO cases (description, queries, allowed)
+SELECT 'arg_sketch_recv (binary COPY of arg_sketch) with truncated, corrupted and random bytes',
+       array_agg(format('SELECT pg_temp.copy_in(''recv_sketch'', %L::bytea)', b) ORDER BY n), '^(00000|22P03)$'
+FROM (SELECT 0 AS n, arg_sketch_send(v_sketch) AS b FROM pool WHERE class = 'valid' AND typ = 'arg_sketch'::regtype
+      UNION ALL SELECT 1, ''::bytea
+      UNION ALL SELECT 10 + k, substr(arg_sketch_send(v_sketch), 1, cut) FROM pool, unnest(ARRAY[1, 4, 8, 100, 300, 2000])
+        WITH ORDINALITY u(cut, k) WHERE class = 'valid' AND typ = 'arg_sketch'::regtype
+      UNION ALL SELECT 30 + k, set_byte(b, at, get_byte(b, at) # 1)
+        FROM (SELECT arg_sketch_send(v_sketch) AS b FROM pool WHERE class = 'valid' AND typ = 'arg_sketch'::regtype) s,
+             LATERAL (SELECT k, (('x' || substr(md5('sketch bit' || k), 1, 8))::bit(32)::bigint % length(b))::int AS at
+                      FROM generate_series(1, 40) k) p
+      UNION ALL SELECT 100 + n, pg_temp.noise('sketch recv ' || n, n * 37) FROM generate_series(1, 10) n
+      UNION ALL SELECT 200, arg_sketch_send(v_sketch) || '\x00'::bytea FROM pool WHERE class = 'valid' AND typ = 'arg_sketch'::regtype) s;
+INSERT INTO cases (description, queries, allowed)
+SELECT format('arg_sketch_out and arg_sketch_send of %s values', class),
+       array_agg(format('SELECT length(%s::text) + length(arg_sketch_send(%s))', pg_temp.value_sql(id), pg_temp.value_sql(id)) ORDER BY id),
+       CASE WHEN class = 'forged' THEN '^(00000|22...|XX001)$' ELSE '^00000$' END
+FROM pool WHERE typ = 'arg_sketch'::regtype AND class IN ('valid', 'unusual', 'forged') GROUP BY class ORDER BY class;
 -- Type output of every unusual and forged value.
 INSERT INTO cases (description, queries, allowed)
 SELECT format('arg_out and arg_send of %s values', class),

@@ -5,7 +5,9 @@
 # generated catalogues of 1k, 10k and 100k models, with and without a selective filter
 # (museum = 'M7', about 1/20 of the rows). The first stage either walks a GiST index on
 # arg_global(descr) (with btree_gist, on (museum, arg_global(descr)) under the filter) or scans
-# a stored column glob = arg_global(descr). Then brute force with 0, 1 and 2 parallel workers.
+# a stored column glob = arg_global(descr). The three-stage search orders the scan's candidates
+# by arg_sketch_distance on a stored column sk = arg_sketch(descr) and ranks only a shortlist of
+# them by <~>. Then brute force with 0, 1 and 2 parallel workers.
 #
 #   tests/scale/bench_two_stage.sh [--existing]
 #
@@ -17,6 +19,8 @@
 #                                             when neither exists)
 #   QUERIES=20                  query models per table (spread over the ids; each is in the table)
 #   CANDIDATES="100 300 1000 3000"  candidate counts of the two-stage search
+#   SHORTLISTS="100 300"        shortlist counts of the three-stage search (each below a count
+#                               of CANDIDATES)
 #   PARALLEL_QUERIES=3          queries per worker count in the parallel measurement
 #   REUSE=1                     keep the database arg_scale_bench and its tables between runs
 #                               (and the extension as it was installed then: after changing
@@ -30,6 +34,7 @@ build=${BUILD_DIR:-build}
 sizes=${SIZES:-"1000 10000 100000"}
 queries=${QUERIES:-20}
 candidates=${CANDIDATES:-"100 300 1000 3000"}
+shortlists=${SHORTLISTS:-"100 300"}
 par_queries=${PARALLEL_QUERIES:-3}
 gen_copy=${GEN_COPY:-$build/scale/gen100k.copy}
 shrec_copy=${SHREC_COPY:-$build/scale/shrec07.copy}
@@ -94,7 +99,8 @@ fi
 create_table() {  # NAME
   run -c "CREATE TABLE $1 (id int PRIMARY KEY, museum text NOT NULL, period text, class text,
                            descr arg NOT NULL,
-                           glob cube GENERATED ALWAYS AS (arg_global(descr)) STORED)"
+                           glob cube GENERATED ALWAYS AS (arg_global(descr)) STORED,
+                           sk arg_sketch GENERATED ALWAYS AS (arg_sketch(descr)) STORED)"
 }
 table_exists() { [[ $(run -tA -c "SELECT to_regclass('$1') IS NOT NULL") == t ]]; }
 
@@ -118,6 +124,12 @@ done
 for n in $sizes; do tables+=("gen_$n"); done
 
 for t in "${tables[@]}"; do
+  # A table kept from a run before the sketch existed gets its column (a rewrite of the table).
+  if [[ $(run -tA -c "SELECT count(*) FROM pg_attribute WHERE attrelid = '$t'::regclass AND attname = 'sk'") == 0 ]]; then
+    t0=$(now)
+    run -c "ALTER TABLE $t ADD COLUMN sk arg_sketch GENERATED ALWAYS AS (arg_sketch(descr)) STORED" -c "VACUUM ANALYZE $t"
+    say "$(awk -v t="$t" -v a="$t0" -v b="$(now)" 'BEGIN { printf "sketch column added to %s in %.1f s", t, b - a }')"
+  fi
   if [[ $(run -tA -c "SELECT count(*) FROM pg_indexes WHERE tablename = '$t' AND indexname = '${t}_global'") == 0 ]]; then
     t0=$(now)
     run -c "CREATE INDEX ${t}_global ON $t USING gist (arg_global(descr))"
@@ -139,6 +151,7 @@ run -c "SELECT t AS table, n AS rows,
           pg_size_pretty(pg_relation_size((t || '_global')::regclass)) AS gist_global,
           pg_size_pretty(pg_relation_size((t || '_museum_global')::regclass)) AS gist_museum_global,
           (SELECT round(avg(pg_column_size(descr))) FROM (SELECT descr FROM $big LIMIT 1000) s) AS arg_bytes_avg_gen,
+          (SELECT round(avg(pg_column_size(sk))) FROM (SELECT sk FROM $big LIMIT 1000) s) AS sketch_bytes_avg_gen,
           (SELECT count(*) FILTER (WHERE museum = 'M7') FROM $big) AS m7_rows_in_biggest
         FROM unnest(ARRAY['$(IFS=,; echo "${tables[*]}" | sed "s/,/','/g")']) AS t,
              LATERAL (SELECT reltuples::bigint AS n FROM pg_class WHERE oid = t::regclass) c" | tee -a "$report"
@@ -155,6 +168,7 @@ DECLARE
   qid int;
   q arg;
   c int;
+  sl int;
   f bool;
   w text;
   r record;
@@ -183,6 +197,15 @@ BEGIN
                                  ORDER BY glob <#> arg_global(\$1) LIMIT %s)
                                SELECT id FROM c ORDER BY descr <~> \$1, id LIMIT 10', t, w, c), q);
         INSERT INTO bench_results VALUES (t, qid, 'two-stage, glob scan', c, f, r.ids, r.ms);
+        FOREACH sl IN ARRAY '{$(tr ' ' ',' <<<"$shortlists")}'::int[] LOOP
+          CONTINUE WHEN sl >= c;
+          SELECT * INTO r FROM bench_ids(format('WITH c AS MATERIALIZED (SELECT id, descr, sk FROM %I %s
+                                   ORDER BY glob <#> arg_global(\$1) LIMIT %s),
+                                 s AS MATERIALIZED (SELECT id, descr FROM c
+                                   ORDER BY arg_sketch_distance(sk, arg_sketch(\$1)) LIMIT %s)
+                               SELECT id FROM s ORDER BY descr <~> \$1, id LIMIT 10', t, w, c, sl), q);
+          INSERT INTO bench_results VALUES (t, qid, 'three-stage, shortlist ' || sl, c, f, r.ids, r.ms);
+        END LOOP;
       END LOOP;
     END LOOP;
     SELECT * INTO r FROM bench_ids(format('SELECT (o).id FROM arg_knn(NULL::%I, ''descr'', \$1, 10) AS k(o, sim)', t), q);
@@ -193,6 +216,10 @@ BEGIN
     INSERT INTO bench_results VALUES (t, qid, 'arg_knn, glob scan', 1000, false, r.ids, r.ms);
     SELECT * INTO r FROM bench_ids(format('SELECT (o).id FROM arg_knn(NULL::%I, ''descr'', \$1, 10, filter => ''{"museum": "M7"}'', descriptor => ''glob'') AS k(o, sim)', t), q);
     INSERT INTO bench_results VALUES (t, qid, 'arg_knn, glob scan', 1000, true, r.ids, r.ms);
+    SELECT * INTO r FROM bench_ids(format('SELECT (o).id FROM arg_knn(NULL::%I, ''descr'', \$1, 10, descriptor => ''glob'', sketch => ''sk'') AS k(o, sim)', t), q);
+    INSERT INTO bench_results VALUES (t, qid, 'arg_knn, glob + sketch', 3000, false, r.ids, r.ms);
+    SELECT * INTO r FROM bench_ids(format('SELECT (o).id FROM arg_knn(NULL::%I, ''descr'', \$1, 10, filter => ''{"museum": "M7"}'', descriptor => ''glob'', sketch => ''sk'') AS k(o, sim)', t), q);
+    INSERT INTO bench_results VALUES (t, qid, 'arg_knn, glob + sketch', 3000, true, r.ids, r.ms);
     RAISE NOTICE '% query % of %', t, i + 1, $queries;
   END LOOP;
 END \$\$;

@@ -6,7 +6,9 @@
 // lower bound LB(M, N) <= G(M, N) of SIM's graph term G (README "Large catalogues"; a bound of
 // the whole SIM would need the views and the spectrum as well): how often it is violated (it
 // held on every pair for 0.1.0's G; later matching rules break it on a few), how close it
-// comes, and how much an exact search by G could skip. Exits 0 either way: a study, not a test.
+// comes, and how much an exact search by G could skip. And the second stage: recall@10 among
+// the C nearest by arg_sketch_distance (graph/shape_sketch.hpp), for graph mixes around the
+// shipped one. Exits 0 either way: a study, not a test.
 //
 //   tests/scale/descriptor_study.sh SET [MAX_MODELS [QUERIES]]   (SET: a .copy or labels.csv)
 //
@@ -27,6 +29,7 @@
 #include "common/parallel_for.hpp"
 #include "graph/search_descriptor.hpp"
 #include "graph/serialize.hpp"
+#include "graph/shape_sketch.hpp"
 #include "match/mpair.hpp"
 #include "match/similarity.hpp"
 
@@ -36,6 +39,7 @@ struct Model {
   std::string cls;
   arg::ArgGraph g;
   std::array<float, arg::kSearchDims> d{};
+  arg::ShapeSketch sketch;
   // Level sums for the bound.
   std::vector<double> area, length, volume;                     // per level
   std::vector<std::array<double, arg::kCordBins>> cords;        // per level
@@ -122,7 +126,8 @@ int main(int argc, char** argv) {
     }
   }
   const std::size_t n = models.size();
-  for (Model& m : models) m.d = arg::search_descriptor(m.g, w), level_sums(m, w);
+  for (Model& m : models)
+    m.d = arg::search_descriptor(m.g, w), m.sketch = arg::shape_sketch(m.g), level_sums(m, w);
   std::vector<std::size_t> qs;
   if (n <= 2000 || max_queries == 0) {
     for (std::size_t q = 0; q < n; ++q) qs.push_back(q);
@@ -135,12 +140,18 @@ int main(int argc, char** argv) {
   // graph_sim: SIM's graph term alone, which the level-sum bound below is a bound of (the
   // whole-shape terms, the views and the spectrum, are not level sums).
   std::vector<float> sim(nq * n, 0.0f), graph_sim(nq * n, 0.0f);
+  // second[m][i * n + j]: the sketch distance with graph mix mixes[m].
+  const std::vector<double> mixes = {0.0, 0.02, arg::kSketchGraphMix, 0.1, 0.2};
+  std::vector<std::vector<float>> second(mixes.size(), std::vector<float>(nq * n, 0.0f));
   const int threads = int(std::max(1u, std::thread::hardware_concurrency()));
   arg::parallel_for(nq * n, threads, [&](std::size_t k) {
     const std::size_t i = k / n, j = k % n;
     if (qs[i] == j) return;
     sim[k] = float(arg::arg_similarity(models[qs[i]].g, models[j].g, w));
     graph_sim[k] = float(arg::graph_similarity(models[qs[i]].g, models[j].g, w));
+    for (std::size_t m = 0; m < mixes.size(); ++m)
+      second[m][k] =
+          float(arg::sketch_distance(models[qs[i]].sketch, models[j].sketch, w, mixes[m]));
   });
 
   // Descriptor variants: kept dimensions of the search descriptor and a norm.
@@ -169,7 +180,8 @@ int main(int argc, char** argv) {
   struct Variant {
     std::string name;
     std::vector<int> dims;
-    int norm;  // 1 taxicab, 2 Euclidean
+    int norm;                      // 1 taxicab, 2 Euclidean
+    const float* pairs = nullptr;  // or a distance per pair, second[m]
   };
   std::vector<Variant> variants = {{"all, taxicab", all, 1}, {"all, Euclidean", all, 2}};
   for (const Block& b : blocks)  // colour is left in: no labelled set has colour
@@ -184,9 +196,17 @@ int main(int argc, char** argv) {
   std::printf("   (recall@10 of the two-stage search, mean over %zu queries)\n", nq);
   // The header's stored global descriptor (48 floats: D2, cords, statistics), for comparison.
   variants.push_back({"header global (48), taxicab", {}, 1});
+  // The second stage, by the sketch; the shipped graph mix is marked.
+  for (std::size_t m = 0; m < mixes.size(); ++m) {
+    char name[80];
+    std::snprintf(name, sizeof name, "sketch, graph mix %.2f%s", mixes[m],
+                  mixes[m] == arg::kSketchGraphMix ? " (shipped)" : "");
+    variants.push_back({name, all, 1, second[m].data()});
+  }
   for (const Variant& v : variants) {
     std::vector<double> recall(cands.size(), 0);
     const bool header = v.dims.empty();
+    const std::size_t dims = v.pairs ? arg::kSketchGraphDims + arg::kPanoramaSize : v.dims.size();
     for (std::size_t qi = 0; qi < nq; ++qi) {
       const std::size_t q = qs[qi];
       const float* row = &sim[qi * n];
@@ -196,7 +216,9 @@ int main(int argc, char** argv) {
         if (j == q) continue;
         by_sim[t] = by_d[t] = int(j), ++t;
         double s = 0;
-        if (header) {
+        if (v.pairs) {
+          s = v.pairs[qi * n + j];
+        } else if (header) {
           for (int k = 0; k < arg::kGlobalDims; ++k)
             s += std::fabs(double(models[q].g.global[k]) - models[j].g.global[k]);
         } else {
@@ -220,8 +242,7 @@ int main(int argc, char** argv) {
         recall[c] += hit / double(K);
       }
     }
-    std::printf("%-40s (%3zu)", v.name.c_str(),
-                header ? std::size_t(arg::kGlobalDims) : v.dims.size());
+    std::printf("%-40s (%4zu)", v.name.c_str(), header ? std::size_t(arg::kGlobalDims) : dims);
     for (double r : recall) std::printf("  %.4f", r / double(nq));
     std::printf("\n");
   }

@@ -22,6 +22,7 @@
 #include "../fuzz/fuzz_read_off.cpp"
 #include "../fuzz/fuzz_read_ply.cpp"
 #include "../fuzz/fuzz_read_stl.cpp"
+#include "../fuzz/fuzz_sketch.cpp"
 #include "../fuzz/fuzz_weights.cpp"
 
 namespace {
@@ -37,12 +38,19 @@ struct Target {
 const std::vector<Target>& targets() {
   using namespace arg::fuzz;
   static const std::vector<Target> all = {
-      {"fuzz_arg_binary", fuzz_arg_binary},       {"fuzz_arg_structure", fuzz_arg_structure},
-      {"fuzz_arg_text", fuzz_arg_text},           {"fuzz_build", fuzz_build},
-      {"fuzz_build_options", fuzz_build_options}, {"fuzz_decode_image", fuzz_decode_image},
-      {"fuzz_read_glb", fuzz_read_glb},           {"fuzz_read_obj", fuzz_read_obj},
-      {"fuzz_read_off", fuzz_read_off},           {"fuzz_read_ply", fuzz_read_ply},
-      {"fuzz_read_stl", fuzz_read_stl},           {"fuzz_weights", fuzz_weights},
+      {"fuzz_arg_binary", fuzz_arg_binary},
+      {"fuzz_arg_structure", fuzz_arg_structure},
+      {"fuzz_arg_text", fuzz_arg_text},
+      {"fuzz_build", fuzz_build},
+      {"fuzz_build_options", fuzz_build_options},
+      {"fuzz_decode_image", fuzz_decode_image},
+      {"fuzz_read_glb", fuzz_read_glb},
+      {"fuzz_read_obj", fuzz_read_obj},
+      {"fuzz_read_off", fuzz_read_off},
+      {"fuzz_read_ply", fuzz_read_ply},
+      {"fuzz_read_stl", fuzz_read_stl},
+      {"fuzz_sketch", fuzz_sketch},
+      {"fuzz_weights", fuzz_weights},
   };
   return all;
 }

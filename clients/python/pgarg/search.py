@@ -1,4 +1,4 @@
-"""nearest: the rows of a table whose ARG is most like a query's, with their SIM, brute force or in two stages."""
+"""nearest: the rows of a table whose ARG is most like a query's, with their SIM, brute force or in stages."""
 
 from __future__ import annotations
 
@@ -14,7 +14,7 @@ from .value import Arg
 
 # Columns left out of the rows by default: the mesh and the descriptors are large and say
 # nothing to a reader of the results.
-_HIDDEN_TYPES = ("bytea", "arg", "cube")
+_HIDDEN_TYPES = ("bytea", "arg", "cube", "arg_sketch")
 
 
 def _default_columns(conn: psycopg.Connection[Any], table: sql.Identifier) -> List[str]:
@@ -44,10 +44,12 @@ def _conditions(where: Mapping[str, Any]) -> "tuple[List[sql.Composable], List[A
 def nearest(conn: psycopg.Connection[Any], table: TableName, query: Arg, k: int = 10, *,
             where: Optional[Mapping[str, Any]] = None, candidates: Optional[int] = None,
             column: str = "descr", descriptor: Optional[str] = None,
+            sketch: Optional[str] = None, shortlist: Optional[int] = None,
             columns: Optional[Sequence[str]] = None) -> List[Dict[str, Any]]:
     """The `k` rows of `table` whose ARG (in `column`) is most like `query`, best first.
 
-    Each row is a dict of `columns` (by default every column that is not bytea, arg or cube)
+    Each row is a dict of `columns` (by default every column that is not bytea, arg, cube or
+    arg_sketch)
     and ``sim``, the server's ``descr <~> query`` (0: the same shape). Ties are broken by the
     ARG's canonical order, as arg_knn does. `where` keeps the rows whose columns equal the
     given values (None: IS NULL); names are quoted as identifiers and values sent as
@@ -57,8 +59,10 @@ def nearest(conn: psycopg.Connection[Any], table: TableName, query: Arg, k: int 
     search runs in two stages through the server's arg_knn: the `candidates` rows nearest by
     the global descriptor (``arg_global``, through a GiST index on ``arg_global(descr)``, or the
     stored cube column `descriptor`), ranked exactly by ``<~>``; there `where` is arg_knn's
-    filter, whose values are compared as text (so JSON-serialisable scalars). Needs
-    register_arg(conn) first.
+    filter, whose values are compared as text (so JSON-serialisable scalars). With `sketch`
+    (an arg_sketch column holding ``arg_sketch(descr)``) a third stage: the candidates are
+    ordered by ``arg_sketch_distance`` and only the `shortlist` nearest (the server's default
+    when None) are ranked by ``<~>``. Needs register_arg(conn) first.
     """
     if not isinstance(query, Arg):
         raise TypeError("query must be an Arg (pgarg.build makes one from mesh bytes)")
@@ -70,6 +74,10 @@ def nearest(conn: psycopg.Connection[Any], table: TableName, query: Arg, k: int 
     names = list(columns) if columns is not None else _default_columns(conn, target)
     if "sim" in names:
         raise ValueError("a column named sim would be hidden by the result's sim")
+    if shortlist is not None and shortlist < 1:
+        raise ValueError("shortlist must be at least 1")
+    if candidates is None and (sketch is not None or shortlist is not None):
+        raise ValueError("sketch and shortlist are stages after the candidates: give candidates too")
     if candidates is None:
         conditions, params = _conditions(where or {})
         conditions.insert(0, sql.SQL("{} IS NOT NULL").format(sql.Identifier(column)))
@@ -86,9 +94,10 @@ def nearest(conn: psycopg.Connection[Any], table: TableName, query: Arg, k: int 
         fields = [sql.SQL("(k.o).{0} AS {0}").format(sql.Identifier(n)) for n in names]
         statement = sql.SQL(
             "SELECT {fields}{sep}k.sim FROM arg_knn(NULL::{table}, %s::name, %s, %s::int, "
-            "%s::int, %s::jsonb, %s::name) AS k(o, sim)").format(
+            "%s::int, %s::jsonb, %s::name, %s::name, %s::int) AS k(o, sim)").format(
                 fields=sql.SQL(", ").join(fields), sep=sql.SQL(", ") if names else sql.SQL(""),
                 table=target)
-        params = [column, query, k, candidates, Jsonb(dict(where)) if where else None, descriptor]
+        params = [column, query, k, candidates, Jsonb(dict(where)) if where else None, descriptor,
+                  sketch, shortlist]
     with conn.cursor(row_factory=dict_row) as cur:
         return cur.execute(statement, params).fetchall()

@@ -108,6 +108,30 @@ def test_a_stored_descriptor_column_serves_the_first_stage(conn: psycopg.Connect
         conn.execute("DROP TABLE search_stored")
 
 
+def test_a_sketch_column_serves_a_third_stage(conn: psycopg.Connection[Any], catalogue: str) -> None:
+    conn.execute("DROP TABLE IF EXISTS search_sketched")
+    conn.execute(f"CREATE TABLE search_sketched AS SELECT id, title, class, descr FROM {catalogue}")
+    conn.execute("ALTER TABLE search_sketched ADD COLUMN sk arg_sketch GENERATED ALWAYS AS (arg_sketch(descr)) STORED")
+    try:
+        query = descr_of(conn, "torus_2")
+        brute = pgarg.nearest(conn, catalogue, query, k=5)
+        # Every row a candidate and on the shortlist: the three stages are brute force; the
+        # sketch column is hidden like the ARG.
+        staged = pgarg.nearest(conn, "search_sketched", query, k=5, candidates=50, sketch="sk", shortlist=50)
+        assert staged == brute
+        assert "sk" not in staged[0]
+        shortlisted = pgarg.nearest(conn, "search_sketched", query, k=3, candidates=50, sketch="sk", shortlist=6)
+        assert shortlisted == brute[:3]
+        with pytest.raises(psycopg.errors.UndefinedColumn):
+            pgarg.nearest(conn, "search_sketched", query, candidates=50, sketch="title")
+        with pytest.raises(ValueError):
+            pgarg.nearest(conn, "search_sketched", query, sketch="sk")
+        with pytest.raises(ValueError):
+            pgarg.nearest(conn, "search_sketched", query, candidates=50, sketch="sk", shortlist=0)
+    finally:
+        conn.execute("DROP TABLE search_sketched")
+
+
 def test_arguments_are_checked(conn: psycopg.Connection[Any], catalogue: str) -> None:
     query = descr_of(conn, "cup_1")
     with pytest.raises(ValueError):

@@ -1,0 +1,120 @@
+// Shape sketches: made from a graph, written, read strictly, compared.
+#include "graph/shape_sketch.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "common/base64.hpp"
+#include "common/byte_io.hpp"
+#include "features/laplace_spectrum.hpp"
+#include "features/panorama_descriptor.hpp"
+#include "graph/panorama_codes.hpp"
+
+namespace arg {
+
+namespace {
+
+constexpr const char* kTextTag = "sketch1:";
+constexpr char kMagic[4] = {'A', 'R', 'G', 'S'};
+constexpr std::uint8_t kPartPanorama = 1, kPartSpectrum = 2;
+constexpr std::uint16_t kKnownFlags = kFlagOpen | kFlagProxy | kFlagWideOpen | kFlagPooled;
+
+bool in_graph_blocks(int k) {
+  return k < kSearchPanoramaAt || k >= kSearchColourAt;
+}
+
+}  // namespace
+
+ShapeSketch shape_sketch(const ArgGraph& g) {
+  ShapeSketch s;
+  s.flags = g.summary.flags & kKnownFlags;
+  const std::array<float, kSearchDims> d = search_descriptor(g);
+  for (int k = 0, j = 0; k < kSearchDims; ++k)
+    if (in_graph_blocks(k)) s.graph[std::size_t(j++)] = d[std::size_t(k)];
+  s.has_panorama = g.panorama.size() == s.panorama.size();
+  if (s.has_panorama) std::copy(g.panorama.begin(), g.panorama.end(), s.panorama.begin());
+  s.has_spectrum = g.spectrum.size() == s.spectrum.size();
+  if (s.has_spectrum) std::copy(g.spectrum.begin(), g.spectrum.end(), s.spectrum.begin());
+  return s;
+}
+
+std::string write_shape_sketch(const ShapeSketch& s) {
+  ByteWriter out;
+  out.put_bytes(std::string_view(kMagic, 4));
+  out.put(kSketchVersion);
+  out.put(
+      std::uint8_t((s.has_panorama ? kPartPanorama : 0) | (s.has_spectrum ? kPartSpectrum : 0)));
+  out.put(std::uint16_t(s.flags & kKnownFlags));
+  for (float x : s.graph) out.put(x);
+  if (s.has_panorama) write_panorama_codes(s.panorama.data(), out);
+  if (s.has_spectrum)
+    for (float x : s.spectrum) out.put(x);
+  return std::move(out.bytes());
+}
+
+void read_shape_sketch(std::string_view bytes, ShapeSketch& s) {
+  ByteReader in(bytes, "arg_sketch");
+  if (in.get_bytes(4) != std::string_view(kMagic, 4)) in.fail("not a sketch (no ARGS magic)");
+  const auto version = in.get<std::uint8_t>();
+  if (version != kSketchVersion)
+    in.fail("sketch version " + std::to_string(version) + ", this library reads version " +
+            std::to_string(kSketchVersion));
+  const auto parts = in.get<std::uint8_t>();
+  if (parts & ~(kPartPanorama | kPartSpectrum)) in.fail("unknown parts in the sketch");
+  s.flags = in.get<std::uint16_t>();
+  if (s.flags & ~kKnownFlags) in.fail("unknown summary flags in the sketch");
+  for (float& x : s.graph) {
+    x = in.get<float>();
+    if (!std::isfinite(x) || x < 0) in.fail("graph block value negative or not finite");
+  }
+  s.has_panorama = (parts & kPartPanorama) != 0;
+  if (s.has_panorama) read_panorama_codes(in, s.panorama.data());
+  s.has_spectrum = (parts & kPartSpectrum) != 0;
+  if (s.has_spectrum) {
+    for (float& x : s.spectrum) {
+      x = in.get<float>();
+      // The range format 3 accepts (serialize.cpp), so a sketch's eigenvalues are a value's.
+      if (!std::isfinite(x) || x < 1e-6f || x > 1e3f) in.fail("eigenvalue out of range");
+    }
+  }
+  if (in.remaining() != 0)
+    in.fail(std::to_string(in.remaining()) + " bytes after the end of the sketch");
+}
+
+std::string sketch_to_text(std::string_view bytes) {
+  return kTextTag + base64_encode(bytes);
+}
+
+std::string sketch_from_text(std::string_view text) {
+  if (text.substr(0, std::strlen(kTextTag)) != kTextTag)
+    throw InputError("arg_sketch: text form must start with \"" + std::string(kTextTag) + "\"");
+  std::string bytes = base64_decode(text.substr(std::strlen(kTextTag)));
+  ShapeSketch check;
+  read_shape_sketch(bytes, check);
+  return bytes;
+}
+
+double sketch_distance(const ShapeSketch& a, const ShapeSketch& b, const Weights& w,
+                       double graph_mix) {
+  // The terms and their weights as similarity.cpp's parts_in sets them.
+  const bool on_proxy = ((a.flags | b.flags) & kFlagProxy) != 0;
+  double w_graph = on_proxy ? double(w.graph) * w.graph_on_proxy : double(w.graph);
+  double w_panorama = 0, panorama = 0, w_spectrum = 0, spectrum = 0;
+  if (w.panorama > 0 && a.has_panorama && b.has_panorama) {
+    w_panorama = w.panorama;
+    panorama = panorama_distance(a.panorama.data(), b.panorama.data());
+  }
+  const bool own_surfaces = !((a.flags | b.flags) & (kFlagProxy | kFlagWideOpen));
+  if (w.spectrum > 0 && own_surfaces && a.has_spectrum && b.has_spectrum) {
+    w_spectrum = w.spectrum;
+    spectrum = spectrum_distance(a.spectrum.data(), b.spectrum.data(), a.spectrum.size());
+  }
+  if (w_graph + w_panorama + w_spectrum <= 0) w_graph = 1;
+  double l1 = 0;
+  for (std::size_t k = 0; k < a.graph.size(); ++k) l1 += std::fabs(double(a.graph[k]) - b.graph[k]);
+  return (w_graph * graph_mix * l1 + w_panorama * panorama + w_spectrum * spectrum) /
+         (w_graph + w_panorama + w_spectrum);
+}
+
+}  // namespace arg

@@ -1,0 +1,66 @@
+// A search's second stage: SIM's whole-shape terms and the graph blocks, small enough per row.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "features/laplace_spectrum.hpp"
+#include "features/panorama_descriptor.hpp"
+#include "graph/arg_graph.hpp"
+#include "graph/search_descriptor.hpp"
+#include "match/weights.hpp"
+
+namespace arg {
+
+// The search descriptor's blocks that stand for the graph (curvature, node counts, largest
+// areas, colour): the sketch's stand-in for SIM's graph term.
+inline constexpr int kSketchGraphDims = kSearchDims - (kSearchColourAt - kSearchPanoramaAt);
+
+// What SIM reads besides the nodes: the panorama and the spectrum exactly as the value holds
+// them (a format-3 value's panorama to the bit), the summary flags that decide which terms
+// count, and the graph blocks. About 2.6 kB, against 10-20 kB for a whole value: a table keeps
+// it in the row (no TOAST fetch) and a query compares thousands of candidates by it in
+// milliseconds, so SIM ranks only the few hundred nearest by the sketch.
+// Plain data (no allocation, trivially copyable): the extension keeps a query's in a
+// function's cache and reads each row's into one it reuses.
+struct ShapeSketch {
+  std::uint16_t flags = 0;  // the value's summary flags (kFlagProxy, kFlagWideOpen, ...)
+  bool has_panorama = false, has_spectrum = false;
+  std::array<float, kSketchGraphDims> graph{};
+  std::array<float, kPanoramaSize> panorama{};
+  std::array<float, kSpectrumSize> spectrum{};
+};
+
+// The sketch of a graph (the graph blocks with default weights, as arg_global's).
+ShapeSketch shape_sketch(const ArgGraph& graph);
+
+// Bytes: "ARGS", version 1, a byte of parts (1 panorama, 2 spectrum), the flags (uint16), the
+// graph blocks (float32, finite, >= 0), the panorama's codes (graph/panorama_codes.hpp), the
+// spectrum (float32 in [1e-6, 1e3]); little-endian, nothing after.
+inline constexpr std::uint8_t kSketchVersion = 1;
+std::string write_shape_sketch(const ShapeSketch& sketch);
+// Strict: every byte checked (InputError naming what is wrong and where); allocates nothing
+// unless it fails.
+void read_shape_sketch(std::string_view bytes, ShapeSketch& out);
+
+// Text form: "sketch1:" then the bytes in padded base64; the reader accepts exactly that and
+// checks the bytes as read_shape_sketch does, returning them.
+std::string sketch_to_text(std::string_view bytes);
+std::string sketch_from_text(std::string_view text);
+
+// How much the graph blocks' taxicab distance counts for SIM's graph term. Chosen by recall of
+// SIM's ten nearest among the sketch's nearest (tests/scale/descriptor_study.sh): 0.05 on a
+// generated catalogue of 20,000 models, 0.1 on the three labelled sets, which lose at most
+// .006 with 0.05 (docs/BENCHMARKS.md "Second stage").
+inline constexpr double kSketchGraphMix = 0.05;
+
+// SIM with its graph term replaced by kSketchGraphMix x the graph blocks' taxicab distance: the
+// same weights, the same rules for proxies, wide-open surfaces and missing terms, the
+// panorama's and the spectrum's distances exactly SIM's.
+// `graph_mix` other than kSketchGraphMix: for the study that chose it.
+double sketch_distance(const ShapeSketch& a, const ShapeSketch& b, const Weights& weights = {},
+                       double graph_mix = kSketchGraphMix);
+
+}  // namespace arg

@@ -1,0 +1,169 @@
+// Sketches: SIM's whole-shape terms to the bit, read strictly, compared as SIM weighs them.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <string>
+
+#include "common/errors.hpp"
+#include "features/laplace_spectrum.hpp"
+#include "features/panorama_descriptor.hpp"
+#include "gen/generate_models.hpp"
+#include "graph/panorama_codes.hpp"
+#include "graph/serialize.hpp"
+#include "graph/shape_sketch.hpp"
+#include "match/similarity.hpp"
+#include "pipeline/build_arg.hpp"
+
+using namespace arg;
+
+namespace {
+
+// Stored values (format 3, as a table holds them): two poses of a human and a cup.
+const ArgGraph& stored(int which) {
+  static const ArgGraph models[3] = {
+      deserialize_arg(serialize_arg(build_arg(generate_model("human", 1, 32, false).mesh))),
+      deserialize_arg(serialize_arg(build_arg(generate_model("human", 2, 32, false).mesh))),
+      deserialize_arg(serialize_arg(build_arg(generate_model("cup", 1, 32, true).mesh)))};
+  return models[which];
+}
+
+ShapeSketch read(const std::string& bytes) {
+  ShapeSketch s;
+  read_shape_sketch(bytes, s);
+  return s;
+}
+
+void put_float(std::string& bytes, std::size_t at, float x) {
+  std::uint32_t bits;
+  std::memcpy(&bits, &x, 4);
+  for (int i = 0; i < 4; ++i) bytes[at + std::size_t(i)] = char((bits >> (8 * i)) & 0xff);
+}
+
+// Where the parts start in a sketch with every part.
+constexpr std::size_t kGraphAt = 8, kPanoramaAt = kGraphAt + 4 * kSketchGraphDims,
+                      kSpectrumAt = kPanoramaAt + kPanoramaCodesSize,
+                      kFullSize = kSpectrumAt + 4 * kSpectrumSize;
+
+}  // namespace
+
+TEST(ShapeSketch, HoldsTheValuesWholeShapeSectionsToTheBit) {
+  for (int m = 0; m < 3; ++m) {
+    const ArgGraph& g = stored(m);
+    ASSERT_EQ(g.panorama.size(), std::size_t(kPanoramaSize));
+    ASSERT_EQ(g.spectrum.size(), std::size_t(kSpectrumSize));
+    const std::string bytes = write_shape_sketch(shape_sketch(g));
+    EXPECT_EQ(bytes.size(), kFullSize);
+    const ShapeSketch s = read(bytes);
+    ASSERT_TRUE(s.has_panorama && s.has_spectrum);
+    // A format-3 panorama's codes are its sketch's.
+    EXPECT_TRUE(std::equal(s.panorama.begin(), s.panorama.end(), g.panorama.begin()));
+    EXPECT_TRUE(std::equal(s.spectrum.begin(), s.spectrum.end(), g.spectrum.begin()));
+    EXPECT_EQ(s.flags, g.summary.flags);
+    EXPECT_EQ(write_shape_sketch(s), bytes);  // read and written again: the same bytes
+  }
+}
+
+TEST(ShapeSketch, GraphBlocksAreTheSearchDescriptorsOtherThanPanoramaAndEigenvalues) {
+  const ArgGraph& g = stored(2);
+  const auto d = search_descriptor(g);
+  const ShapeSketch s = shape_sketch(g);
+  std::size_t j = 0;
+  for (int k = 0; k < kSearchDims; ++k)
+    if (k < kSearchPanoramaAt || k >= kSearchColourAt) {
+      EXPECT_EQ(s.graph[j++], d[std::size_t(k)]);
+    }
+  EXPECT_EQ(j, std::size_t(kSketchGraphDims));
+}
+
+TEST(ShapeSketch, DistanceIsSimWithTheGraphTermReplaced) {
+  const Weights w;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      const ShapeSketch sa = shape_sketch(stored(a)), sb = shape_sketch(stored(b));
+      const SimilarityParts p = similarity_parts(stored(a), stored(b), w);
+      double l1 = 0;
+      for (int k = 0; k < kSketchGraphDims; ++k)
+        l1 += std::fabs(double(sa.graph[std::size_t(k)]) - sb.graph[std::size_t(k)]);
+      const double expected = (p.w_graph * kSketchGraphMix * l1 + p.w_panorama * p.panorama +
+                               p.w_spectrum * p.spectrum) /
+                              (p.w_graph + p.w_panorama + p.w_spectrum);
+      EXPECT_DOUBLE_EQ(sketch_distance(sa, sb, w), expected) << a << " " << b;
+      EXPECT_EQ(sketch_distance(sa, sb, w), sketch_distance(sb, sa, w));
+      if (a == b) {
+        EXPECT_EQ(sketch_distance(sa, sb, w), 0.0);
+      }
+    }
+  // A pose of a human is nearer the other pose than a cup.
+  const ShapeSketch h1 = shape_sketch(stored(0)), h2 = shape_sketch(stored(1)),
+                    cup = shape_sketch(stored(2));
+  EXPECT_LT(sketch_distance(h1, h2), sketch_distance(h1, cup));
+}
+
+TEST(ShapeSketch, LeavesOutTheTermsSimLeavesOut) {
+  const ShapeSketch a = shape_sketch(stored(0));
+  ShapeSketch b = shape_sketch(stored(1));
+  // A proxy's spectrum counts for nothing: changing it changes nothing.
+  ShapeSketch proxy = b;
+  proxy.flags |= kFlagProxy;
+  const double d = sketch_distance(a, proxy);
+  for (float& x : proxy.spectrum) x *= 2;
+  EXPECT_EQ(sketch_distance(a, proxy), d);
+  // Without a panorama on one side, the panorama counts for nothing either.
+  ShapeSketch bare = b;
+  bare.has_panorama = false;
+  Weights only_views;
+  only_views.spectrum = 0;
+  double l1 = 0;
+  for (int k = 0; k < kSketchGraphDims; ++k)
+    l1 += std::fabs(double(a.graph[std::size_t(k)]) - bare.graph[std::size_t(k)]);
+  EXPECT_DOUBLE_EQ(sketch_distance(a, bare, only_views), kSketchGraphMix * l1)
+      << "the graph blocks alone, as SIM falls back on the graph";
+  const ShapeSketch back = read(write_shape_sketch(bare));
+  EXPECT_FALSE(back.has_panorama);
+  EXPECT_TRUE(back.has_spectrum && back.spectrum == b.spectrum);
+}
+
+TEST(ShapeSketch, RefusesEveryMalformedByte) {
+  const std::string good = write_shape_sketch(shape_sketch(stored(0)));
+  auto refused = [](std::string bytes, const char* what) {
+    ShapeSketch s;
+    EXPECT_THROW(read_shape_sketch(bytes, s), InputError) << what;
+  };
+  for (std::size_t n = 0; n < good.size(); ++n) refused(good.substr(0, n), "truncated");
+  refused(good + '\0', "a byte after the end");
+  std::string b = good;
+  b[0] = 'X', refused(b, "magic");
+  b = good, b[4] = 2, refused(b, "version");
+  b = good, b[5] |= 4, refused(b, "unknown part");
+  b = good, b[7] = char(0x80), refused(b, "unknown flag");
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  b = good, put_float(b, kGraphAt + 8, nan), refused(b, "NaN graph value");
+  b = good, put_float(b, kGraphAt, -1.0f), refused(b, "negative graph value");
+  b = good, put_float(b, kPanoramaAt, 2.0f), refused(b, "panorama scale above 1");
+  b = good, put_float(b, kPanoramaAt, nan), refused(b, "NaN panorama scale");
+  b = good, put_float(b, kSpectrumAt, 0.0f), refused(b, "zero eigenvalue");
+  b = good, put_float(b, kSpectrumAt + 4, std::numeric_limits<float>::infinity()),
+  refused(b, "infinite eigenvalue");
+  // A block whose largest code is not 255 is not what the writer makes.
+  b = good;
+  for (std::size_t k = kPanoramaAt + 4 * kPanoramaBlocks;
+       k < kPanoramaAt + 4 * kPanoramaBlocks + kPanoramaPerView; ++k)
+    if (static_cast<unsigned char>(b[k]) == 255) b[k] = char(254);
+  refused(b, "non-canonical codes");
+  // Without the panorama part, its bytes are trailing bytes.
+  b = good, b[5] = 2, refused(b, "parts say no panorama");
+  EXPECT_NO_THROW(read(good));
+}
+
+TEST(ShapeSketch, TextFormRoundTripsAndIsChecked) {
+  const std::string bytes = write_shape_sketch(shape_sketch(stored(2)));
+  const std::string text = sketch_to_text(bytes);
+  EXPECT_EQ(text.rfind("sketch1:", 0), 0u);
+  EXPECT_EQ(sketch_from_text(text), bytes);
+  EXPECT_THROW(sketch_from_text("arg1:" + text.substr(8)), InputError);
+  EXPECT_THROW(sketch_from_text("sketch1:QUJD"), InputError);  // base64 of "ABC": no sketch
+  EXPECT_THROW(sketch_from_text(text.substr(0, text.size() - 4)), InputError);
+}
