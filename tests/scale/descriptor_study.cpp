@@ -206,7 +206,8 @@ int main(int argc, char** argv) {
   for (const Variant& v : variants) {
     std::vector<double> recall(cands.size(), 0);
     const bool header = v.dims.empty();
-    const std::size_t dims = v.pairs ? arg::kSketchGraphDims + arg::kPanoramaSize : v.dims.size();
+    const std::size_t dims =
+        v.pairs ? arg::kSketchGraphDims + arg::kPanoramaSize + arg::kSpectrumSize : v.dims.size();
     for (std::size_t qi = 0; qi < nq; ++qi) {
       const std::size_t q = qs[qi];
       const float* row = &sim[qi * n];
