@@ -99,7 +99,8 @@ DROP FUNCTION arg_knn(anyelement, name, arg, int, int, jsonb, name);
 -- sketch: an arg_sketch column holding arg_sketch(col); the candidates are then ordered by
 -- arg_sketch_distance and only the shortlist nearest (default 20 k, at least 200) are ranked
 -- by <~>, which finds SIM's nearest among many more candidates for the same time (docs/
--- BENCHMARKS.md "Second stage"). Under a filter it still returns min(k, matching rows) rows.
+-- BENCHMARKS.md "Second stage: the sketch"); a candidate whose sketch is NULL comes last.
+-- Under a filter it still returns min(k, matching rows) rows.
 -- Ties in sim are broken by the arg's canonical order.
 CREATE FUNCTION arg_knn(tbl anyelement, col name, query arg, k int DEFAULT 10,
                         candidates int DEFAULT NULL, filter jsonb DEFAULT NULL,
@@ -113,6 +114,7 @@ AS $$
 DECLARE
   relid oid;
   kind "char";
+  children bool;
   conditions text := '';
   nearest text;
   gq cube;
@@ -121,7 +123,8 @@ DECLARE
   seqscan text := current_setting('enable_seqscan');
   item record;
 BEGIN
-  SELECT c.oid, c.relkind INTO relid, kind FROM pg_type t JOIN pg_class c ON c.oid = t.typrelid
+  SELECT c.oid, c.relkind, c.relhassubclass INTO relid, kind, children
+  FROM pg_type t JOIN pg_class c ON c.oid = t.typrelid
   WHERE t.oid = pg_typeof(tbl) AND c.relkind IN ('r', 'p', 'v', 'm', 'f');
   IF relid IS NULL THEN
     RAISE EXCEPTION 'arg_knn: tbl must be NULL cast to a table''s row type, as in NULL::objects'
@@ -132,6 +135,10 @@ BEGIN
   END IF;
   IF shortlist < 1 THEN
     RAISE EXCEPTION 'arg_knn: shortlist must be at least 1'
+      USING ERRCODE = 'invalid_parameter_value';
+  END IF;
+  IF shortlist IS NOT NULL AND sketch IS NULL THEN
+    RAISE EXCEPTION 'arg_knn: a shortlist needs a sketch column (sketch => ...)'
       USING ERRCODE = 'invalid_parameter_value';
   END IF;
   IF query IS NULL OR col IS NULL THEN
@@ -175,7 +182,8 @@ BEGIN
   ELSE
     nearest := format('t.%I', descriptor);
   END IF;
-  IF kind IN ('r', 'm') THEN
+  -- (Only for a relation without inheritance children: their row addresses repeat the parent's.)
+  IF kind IN ('r', 'm') AND NOT children THEN
     -- The first stage sorts row addresses, not rows: a sort of thousands of whole rows outgrows
     -- work_mem and spills every row of the table to disk (measured: 81 MB and 150 ms at 100,000
     -- rows); the candidates are then fetched by address (same snapshot, same statement).

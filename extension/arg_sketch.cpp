@@ -37,6 +37,8 @@ const arg::ShapeSketch& sketch_arg(FunctionCallInfo fcinfo, DistanceCache* cache
   if (s.length == bytes.size() && s.length > 0 && std::memcmp(s.bytes, bytes.data(), s.length) == 0)
     return s.sketch;
   s.length = 0;
+  // A larger value gets a new buffer; the old one stays in fn_mcxt until the query ends (a few
+  // kB a growth, and sketches differ little in size).
   if (s.capacity < bytes.size()) {
     s.bytes = static_cast<char*>(MemoryContextAlloc(fcinfo->flinfo->fn_mcxt, bytes.size()));
     s.capacity = bytes.size();
@@ -111,7 +113,12 @@ Datum arg_sketch(PG_FUNCTION_ARGS) {
   varlena* result = nullptr;
   argpg::Outcome out = argpg::guarded([&] {
     const arg::ArgGraph g = arg::deserialize_arg(argpg::view(value), /*check_digest=*/false);
-    result = argpg::to_varlena(arg::write_shape_sketch(arg::shape_sketch(g)));
+    const std::string bytes = arg::write_shape_sketch(arg::shape_sketch(g));
+    // shape_sketch leaves out what its reader would refuse; checked again here, so that no
+    // stored sketch is one arg_sketch_distance cannot read.
+    arg::ShapeSketch check;
+    arg::read_shape_sketch(bytes, check);
+    result = argpg::to_varlena(bytes);
   });
   argpg::raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot read ARG");
   PG_RETURN_POINTER(result);

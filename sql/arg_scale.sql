@@ -97,6 +97,12 @@ SELECT count(*) AS sketches, min(octet_length(sk::text)) > 2000 AS text_over_200
        bool_and(arg_sketch_distance(sk, arg_sketch(:'q'::arg)) = arg_sketch_distance(arg_sketch(:'q'::arg), sk))
          AS symmetric
 FROM museum_objects WHERE sk IS NOT NULL;
+-- Over every pair in one statement (the function keeps each argument's last sketch read):
+-- symmetric, and as many distinct distances as pairs of different models.
+SELECT bool_and(arg_sketch_distance(a.sk, b.sk) = arg_sketch_distance(b.sk, a.sk))
+         AS symmetric_over_all_pairs,
+       count(DISTINCT arg_sketch_distance(a.sk, b.sk)) FILTER (WHERE a.id < b.id) AS distinct_distances
+FROM museum_objects a, museum_objects b WHERE a.sk IS NOT NULL AND b.sk IS NOT NULL;
 -- Nearer by the sketch means more alike by SIM: the nearest of a vase are vases.
 SELECT o.id, o.class FROM museum_objects o
 WHERE o.id <> 0 AND o.sk IS NOT NULL
@@ -115,7 +121,27 @@ SELECT count(*) AS five_nearest_from_a_shortlist_of_10
 FROM arg_knn(NULL::museum_objects, 'descr', :'q', 5, 36, descriptor => 'glob', sketch => 'sk',
              shortlist => 10) AS k(o, sim)
 JOIN brute ON brute.id = (k.o).id AND brute.sim = k.sim;
+-- The first stage from the GiST index instead of the stored column: the same answer.
+SELECT count(*) AS gist_first_stage_same_answer
+FROM arg_knn(NULL::museum_objects, 'descr', :'q', 5, 36, sketch => 'sk', shortlist => 10) AS a(o, sim)
+JOIN arg_knn(NULL::museum_objects, 'descr', :'q', 5, 36, descriptor => 'glob', sketch => 'sk',
+             shortlist => 10) AS b(o, sim) ON (a.o).id = (b.o).id AND a.sim = b.sim;
+-- A table with an inheritance child: the child's rows rank (here a copy of the query, SIM 0)
+-- and a filter still holds for them (row addresses repeat across parent and child, so the
+-- first stage sorts rows there, not addresses).
+CREATE TABLE shelf (id int, museum text, descr arg,
+                    glob cube GENERATED ALWAYS AS (arg_global(descr)) STORED,
+                    sk arg_sketch GENERATED ALWAYS AS (arg_sketch(descr)) STORED);
+INSERT INTO shelf (id, museum, descr) SELECT id, museum, descr FROM museum_objects;
+CREATE TABLE shelf_annex () INHERITS (shelf);
+INSERT INTO shelf_annex (id, museum, descr) SELECT 1000, 'M9', descr FROM museum_objects WHERE id = 0;
+SELECT (o).id, (o).museum, sim
+FROM arg_knn(NULL::shelf, 'descr', :'q', 2, descriptor => 'glob', sketch => 'sk') AS k(o, sim);
+SELECT count(*) AS rows, bool_and((o).museum = 'M2') AS all_in_m2
+FROM arg_knn(NULL::shelf, 'descr', :'q', 5, 36, '{"museum": "M2"}', 'glob', 'sk', 10) AS k(o, sim);
+DROP TABLE shelf CASCADE;
 \set VERBOSITY terse
+SELECT count(*) FROM arg_knn(NULL::museum_objects, 'descr', :'q', shortlist => 10);
 SELECT count(*) FROM arg_knn(NULL::museum_objects, 'descr', :'q', sketch => 'glob');
 SELECT count(*) FROM arg_knn(NULL::museum_objects, 'descr', :'q', sketch => 'sk', shortlist => 0);
 SELECT 'sketch1:QUJD'::arg_sketch;

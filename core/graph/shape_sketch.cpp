@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 #include "common/base64.hpp"
 #include "common/byte_io.hpp"
@@ -17,11 +18,19 @@ namespace {
 
 constexpr const char* kTextTag = "sketch1:";
 constexpr char kMagic[4] = {'A', 'R', 'G', 'S'};
-constexpr std::uint8_t kPartPanorama = 1, kPartSpectrum = 2;
+constexpr std::uint8_t kPartPanorama = 1, kPartSpectrum = 2, kPartColour = 4;
+// The graph blocks' colour values come last.
+constexpr std::size_t kColourValues = 3 * kSearchColourBins;
+static_assert(kSearchColourAt + 3 * kSearchColourBins == kSearchDims, "colour ends the descriptor");
 constexpr std::uint16_t kKnownFlags = kFlagOpen | kFlagProxy | kFlagWideOpen | kFlagPooled;
 
 bool in_graph_blocks(int k) {
   return k < kSearchPanoramaAt || k >= kSearchColourAt;
+}
+
+// Whether every value lies in [lo, hi] (NaN does not).
+bool all_within(const std::vector<float>& v, float lo, float hi) {
+  return std::all_of(v.begin(), v.end(), [&](float x) { return x >= lo && x <= hi; });
 }
 
 }  // namespace
@@ -29,12 +38,16 @@ bool in_graph_blocks(int k) {
 ShapeSketch shape_sketch(const ArgGraph& g) {
   ShapeSketch s;
   s.flags = g.summary.flags & kKnownFlags;
+  s.has_colour = g.summary.has_colour != 0;
   const std::array<float, kSearchDims> d = search_descriptor(g);
+  // The descriptor's graph blocks are finite; a forged colour could still make one negative.
   for (int k = 0, j = 0; k < kSearchDims; ++k)
-    if (in_graph_blocks(k)) s.graph[std::size_t(j++)] = d[std::size_t(k)];
-  s.has_panorama = g.panorama.size() == s.panorama.size();
+    if (in_graph_blocks(k)) s.graph[std::size_t(j++)] = std::max(0.0f, d[std::size_t(k)]);
+  // Rankings read stored values without range checks (serialize.hpp): a part out of the range
+  // the formats accept counts as missing, so that every sketch made here reads back.
+  s.has_panorama = g.panorama.size() == s.panorama.size() && all_within(g.panorama, 0, 1.0001f);
   if (s.has_panorama) std::copy(g.panorama.begin(), g.panorama.end(), s.panorama.begin());
-  s.has_spectrum = g.spectrum.size() == s.spectrum.size();
+  s.has_spectrum = g.spectrum.size() == s.spectrum.size() && all_within(g.spectrum, 1e-6f, 1e3f);
   if (s.has_spectrum) std::copy(g.spectrum.begin(), g.spectrum.end(), s.spectrum.begin());
   return s;
 }
@@ -43,8 +56,8 @@ std::string write_shape_sketch(const ShapeSketch& s) {
   ByteWriter out;
   out.put_bytes(std::string_view(kMagic, 4));
   out.put(kSketchVersion);
-  out.put(
-      std::uint8_t((s.has_panorama ? kPartPanorama : 0) | (s.has_spectrum ? kPartSpectrum : 0)));
+  out.put(std::uint8_t((s.has_panorama ? kPartPanorama : 0) | (s.has_spectrum ? kPartSpectrum : 0) |
+                       (s.has_colour ? kPartColour : 0)));
   out.put(std::uint16_t(s.flags & kKnownFlags));
   for (float x : s.graph) out.put(x);
   if (s.has_panorama) write_panorama_codes(s.panorama.data(), out);
@@ -61,13 +74,17 @@ void read_shape_sketch(std::string_view bytes, ShapeSketch& s) {
     in.fail("sketch version " + std::to_string(version) + ", this library reads version " +
             std::to_string(kSketchVersion));
   const auto parts = in.get<std::uint8_t>();
-  if (parts & ~(kPartPanorama | kPartSpectrum)) in.fail("unknown parts in the sketch");
+  if (parts & ~(kPartPanorama | kPartSpectrum | kPartColour))
+    in.fail("unknown parts in the sketch");
   s.flags = in.get<std::uint16_t>();
   if (s.flags & ~kKnownFlags) in.fail("unknown summary flags in the sketch");
   for (float& x : s.graph) {
     x = in.get<float>();
     if (!std::isfinite(x) || x < 0) in.fail("graph block value negative or not finite");
   }
+  s.has_colour = (parts & kPartColour) != 0;
+  for (std::size_t k = s.graph.size() - kColourValues; k < s.graph.size() && !s.has_colour; ++k)
+    if (s.graph[k] != 0) in.fail("colour values in a sketch without colour");
   s.has_panorama = (parts & kPartPanorama) != 0;
   if (s.has_panorama) read_panorama_codes(in, s.panorama.data());
   s.has_spectrum = (parts & kPartSpectrum) != 0;
@@ -111,8 +128,11 @@ double sketch_distance(const ShapeSketch& a, const ShapeSketch& b, const Weights
     spectrum = spectrum_distance(a.spectrum.data(), b.spectrum.data(), a.spectrum.size());
   }
   if (w_graph + w_panorama + w_spectrum <= 0) w_graph = 1;
+  // Colour weighs nothing in SIM unless both models have it (similarity_terms.hpp).
+  const std::size_t end =
+      a.has_colour && b.has_colour ? a.graph.size() : a.graph.size() - kColourValues;
   double l1 = 0;
-  for (std::size_t k = 0; k < a.graph.size(); ++k) l1 += std::fabs(double(a.graph[k]) - b.graph[k]);
+  for (std::size_t k = 0; k < end; ++k) l1 += std::fabs(double(a.graph[k]) - b.graph[k]);
   return (w_graph * graph_mix * l1 + w_panorama * panorama + w_spectrum * spectrum) /
          (w_graph + w_panorama + w_spectrum);
 }

@@ -19,26 +19,29 @@ namespace arg {
 inline constexpr int kSketchGraphDims = kSearchDims - (kSearchColourAt - kSearchPanoramaAt);
 
 // What SIM reads besides the nodes: the panorama and the spectrum exactly as the value holds
-// them (a format-3 value's panorama to the bit), the summary flags that decide which terms
-// count, and the graph blocks. About 2.6 kB, against 10-20 kB for a whole value: a table keeps
-// it in the row (no TOAST fetch) and a query compares thousands of candidates by it in
-// milliseconds, so SIM ranks only the few hundred nearest by the sketch.
+// them (a format-3 value's panorama to the bit; a format-2 value's is coded as format 3 codes
+// it), the summary flags and whether the value has colour, which decide which terms count, and
+// the graph blocks. About 2.6 kB, against 10-20 kB for a whole value: a query reads thousands of
+// candidates' sketches in tens of milliseconds, so SIM ranks only the few hundred nearest.
 // Plain data (no allocation, trivially copyable): the extension keeps a query's in a
 // function's cache and reads each row's into one it reuses.
 struct ShapeSketch {
   std::uint16_t flags = 0;  // the value's summary flags (kFlagProxy, kFlagWideOpen, ...)
-  bool has_panorama = false, has_spectrum = false;
+  bool has_panorama = false, has_spectrum = false, has_colour = false;
   std::array<float, kSketchGraphDims> graph{};
   std::array<float, kPanoramaSize> panorama{};
   std::array<float, kSpectrumSize> spectrum{};
 };
 
-// The sketch of a graph (the graph blocks with default weights, as arg_global's).
+// The sketch of a graph (the graph blocks with default weights, as arg_global's). A panorama or
+// spectrum with a value out of the range the formats accept (an unchecked stored value) is
+// left out, so the sketch always reads back.
 ShapeSketch shape_sketch(const ArgGraph& graph);
 
-// Bytes: "ARGS", version 1, a byte of parts (1 panorama, 2 spectrum), the flags (uint16), the
-// graph blocks (float32, finite, >= 0), the panorama's codes (graph/panorama_codes.hpp), the
-// spectrum (float32 in [1e-6, 1e3]); little-endian, nothing after.
+// Bytes: "ARGS", version 1, a byte of parts (1 panorama, 2 spectrum, 4 colour), the flags
+// (uint16), the graph blocks (float32, finite, >= 0; colour's zero without colour), the
+// panorama's codes (graph/panorama_codes.hpp), the spectrum (float32 in [1e-6, 1e3]);
+// little-endian, nothing after.
 inline constexpr std::uint8_t kSketchVersion = 1;
 std::string write_shape_sketch(const ShapeSketch& sketch);
 // Strict: every byte checked (InputError naming what is wrong and where); allocates nothing
@@ -57,7 +60,7 @@ std::string sketch_from_text(std::string_view text);
 inline constexpr double kSketchGraphMix = 0.05;
 
 // SIM with its graph term replaced by kSketchGraphMix x the graph blocks' taxicab distance: the
-// same weights, the same rules for proxies, wide-open surfaces and missing terms, the
+// same weights, the same rules for proxies, wide-open surfaces, colour and missing terms, the
 // panorama's and the spectrum's distances exactly SIM's.
 // `graph_mix` other than kSketchGraphMix: for the study that chose it.
 double sketch_distance(const ShapeSketch& a, const ShapeSketch& b, const Weights& weights = {},

@@ -84,8 +84,10 @@ TEST(ShapeSketch, DistanceIsSimWithTheGraphTermReplaced) {
     for (int b = 0; b < 3; ++b) {
       const ShapeSketch sa = shape_sketch(stored(a)), sb = shape_sketch(stored(b));
       const SimilarityParts p = similarity_parts(stored(a), stored(b), w);
+      // Colour (the last 12 values) counts only between two coloured models, as in SIM.
+      const int end = sa.has_colour && sb.has_colour ? kSketchGraphDims : kSketchGraphDims - 12;
       double l1 = 0;
-      for (int k = 0; k < kSketchGraphDims; ++k)
+      for (int k = 0; k < end; ++k)
         l1 += std::fabs(double(sa.graph[std::size_t(k)]) - sb.graph[std::size_t(k)]);
       const double expected = (p.w_graph * kSketchGraphMix * l1 + p.w_panorama * p.panorama +
                                p.w_spectrum * p.spectrum) /
@@ -137,7 +139,7 @@ TEST(ShapeSketch, RefusesEveryMalformedByte) {
   std::string b = good;
   b[0] = 'X', refused(b, "magic");
   b = good, b[4] = 2, refused(b, "version");
-  b = good, b[5] |= 4, refused(b, "unknown part");
+  b = good, b[5] |= 8, refused(b, "unknown part");
   b = good, b[7] = char(0x80), refused(b, "unknown flag");
   const float nan = std::numeric_limits<float>::quiet_NaN();
   b = good, put_float(b, kGraphAt + 8, nan), refused(b, "NaN graph value");
@@ -166,4 +168,39 @@ TEST(ShapeSketch, TextFormRoundTripsAndIsChecked) {
   EXPECT_THROW(sketch_from_text("arg1:" + text.substr(8)), InputError);
   EXPECT_THROW(sketch_from_text("sketch1:QUJD"), InputError);  // base64 of "ABC": no sketch
   EXPECT_THROW(sketch_from_text(text.substr(0, text.size() - 4)), InputError);
+}
+
+TEST(ShapeSketch, AValueOutOfRangeLeavesItsPartOutSoTheSketchReadsBack) {
+  // Rankings read stored values unchecked: a forged NaN, a panorama value above 1 or a zero
+  // eigenvalue must not make a sketch that its own reader refuses.
+  for (int bad = 0; bad < 4; ++bad) {
+    ArgGraph g = stored(1);
+    if (bad == 0) g.panorama[17] = std::numeric_limits<float>::quiet_NaN();
+    if (bad == 1) g.panorama[900] = 2.0f;
+    if (bad == 2) g.spectrum[3] = 0.0f;
+    if (bad == 3) g.spectrum[0] = std::numeric_limits<float>::infinity();
+    const ShapeSketch s = shape_sketch(g);
+    EXPECT_EQ(s.has_panorama, bad >= 2) << bad;
+    EXPECT_EQ(s.has_spectrum, bad < 2) << bad;
+    EXPECT_NO_THROW(read(write_shape_sketch(s))) << bad;
+  }
+}
+
+TEST(ShapeSketch, ColourCountsOnlyBetweenTwoColouredModels) {
+  const ShapeSketch cup = shape_sketch(stored(2)), human = shape_sketch(stored(0));
+  ASSERT_TRUE(cup.has_colour);
+  ASSERT_FALSE(human.has_colour);
+  // Against a model without colour, the cup's colour values change nothing (SIM's rule).
+  ShapeSketch recoloured = cup;
+  for (std::size_t k = recoloured.graph.size() - 12; k < recoloured.graph.size(); ++k)
+    recoloured.graph[k] *= 3;
+  EXPECT_EQ(sketch_distance(human, recoloured), sketch_distance(human, cup));
+  // Between two coloured models they count.
+  EXPECT_GT(sketch_distance(cup, recoloured), 0.0);
+  // A sketch that says it has no colour but carries colour values is refused.
+  ShapeSketch forged = human;
+  forged.graph.back() = 1.0f;
+  ShapeSketch out;
+  EXPECT_THROW(read_shape_sketch(write_shape_sketch(forged), out), InputError);
+  EXPECT_TRUE(read(write_shape_sketch(cup)).has_colour);
 }
