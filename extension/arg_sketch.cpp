@@ -1,5 +1,4 @@
 // The `arg_sketch` type: text and binary forms, arg_sketch(arg) and arg_sketch_distance.
-#include <new>
 #include <type_traits>
 
 #include "graph/serialize.hpp"
@@ -86,10 +85,8 @@ Datum arg_sketch_recv(PG_FUNCTION_ARGS) {
   StringInfo buf = (StringInfo)PG_GETARG_POINTER(0);
   const char* bytes = buf->data + buf->cursor;
   const int size = buf->len - buf->cursor;
-  argpg::Outcome out = argpg::guarded([&] {
-    arg::ShapeSketch check;
-    arg::read_shape_sketch(std::string_view(bytes, static_cast<std::size_t>(size)), check);
-  });
+  argpg::Outcome out = argpg::guarded(
+      [&] { arg::validate_sketch_bytes(std::string_view(bytes, static_cast<std::size_t>(size))); });
   argpg::raise_if_failed(out, ERRCODE_INVALID_BINARY_REPRESENTATION,
                          "invalid binary input for type arg_sketch");
   bytea* result = (bytea*)palloc(VARHDRSZ + size);
@@ -116,8 +113,7 @@ Datum arg_sketch(PG_FUNCTION_ARGS) {
     const std::string bytes = arg::write_shape_sketch(arg::shape_sketch(g));
     // shape_sketch leaves out what its reader would refuse; checked again here, so that no
     // stored sketch is one arg_sketch_distance cannot read.
-    arg::ShapeSketch check;
-    arg::read_shape_sketch(bytes, check);
+    arg::validate_sketch_bytes(bytes);
     result = argpg::to_varlena(bytes);
   });
   argpg::raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot read ARG");

@@ -99,6 +99,11 @@ void read_shape_sketch(std::string_view bytes, ShapeSketch& s) {
     in.fail(std::to_string(in.remaining()) + " bytes after the end of the sketch");
 }
 
+void validate_sketch_bytes(std::string_view bytes) {
+  ShapeSketch check;
+  read_shape_sketch(bytes, check);
+}
+
 std::string sketch_to_text(std::string_view bytes) {
   return kTextTag + base64_encode(bytes);
 }
@@ -107,8 +112,7 @@ std::string sketch_from_text(std::string_view text) {
   if (text.substr(0, std::strlen(kTextTag)) != kTextTag)
     throw InputError("arg_sketch: text form must start with \"" + std::string(kTextTag) + "\"");
   std::string bytes = base64_decode(text.substr(std::strlen(kTextTag)));
-  ShapeSketch check;
-  read_shape_sketch(bytes, check);
+  validate_sketch_bytes(bytes);
   return bytes;
 }
 

@@ -47,6 +47,8 @@ std::string write_shape_sketch(const ShapeSketch& sketch);
 // Strict: every byte checked (InputError naming what is wrong and where); allocates nothing
 // unless it fails.
 void read_shape_sketch(std::string_view bytes, ShapeSketch& out);
+// read_shape_sketch's checks alone (input of the text and binary forms, what arg_sketch made).
+void validate_sketch_bytes(std::string_view bytes);
 
 // Text form: "sketch1:" then the bytes in padded base64; the reader accepts exactly that and
 // checks the bytes as read_shape_sketch does, returning them.
