@@ -30,7 +30,7 @@ set(ARG_METHOD_SOURCES
     features/laplace_spectrum.cpp features/node_attributes.cpp features/panorama_descriptor.cpp
     features/panoramic_views.cpp features/shape_distributions.cpp
     graph/arg_graph.cpp graph/comparable.cpp graph/compact_nodes.cpp graph/pool_fragments.cpp
-    graph/panorama_codes.cpp graph/quantise.cpp graph/search_descriptor.cpp graph/shape_sketch.cpp graph/serialize.cpp
+    graph/panorama_codes.cpp graph/quantise.cpp graph/search_descriptor.cpp graph/shape_sketch.cpp graph/sketch_cells.cpp graph/serialize.cpp
     match/child_halves.cpp match/match_prep.cpp match/mpair.cpp match/node_similarity.cpp
     match/packed_graph.cpp match/part_match.cpp match/sim_key.cpp match/similarity.cpp
     match/similarity_terms.cpp match/subgraph.cpp match/weights.cpp

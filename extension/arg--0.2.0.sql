@@ -356,6 +356,39 @@ CREATE FUNCTION arg_sketch_distance(a arg_sketch, b arg_sketch, weights arg_weig
 COMMENT ON FUNCTION arg_sketch_distance(arg_sketch, arg_sketch, arg_weights) IS
   'SIM with its graph term replaced by a summary''s distance: the panorama and spectrum terms exactly as arg_sim weighs them; orders candidates before <~>';
 
+-- arg_sketch_distance with the default weights, as the operator <~> between sketches: what an
+-- arg_ivf index orders by.
+CREATE FUNCTION arg_sketch_dist(arg_sketch, arg_sketch) RETURNS float8
+  AS 'MODULE_PATHNAME', 'arg_sketch_dist' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 20;
+
+COMMENT ON FUNCTION arg_sketch_dist(arg_sketch, arg_sketch) IS
+  'arg_sketch_distance(a, b) with the default weights; the <~> operator of arg_sketch';
+
+CREATE OPERATOR <~> (
+  LEFTARG = arg_sketch,
+  RIGHTARG = arg_sketch,
+  FUNCTION = arg_sketch_dist,
+  COMMUTATOR = <~>
+);
+
+COMMENT ON OPERATOR <~> (arg_sketch, arg_sketch) IS
+  'sketch distance (arg_sketch_distance with default weights), for ORDER BY and arg_ivf indexes';
+
+-- An approximate index of sketches (README "Large catalogues"): an inverted file whose cells
+-- are centred on sketches of a sample of the rows. ORDER BY sketch <~> query reads the lists of
+-- the arg.ivf_probes cells nearest to the query, not the whole table. WITH (lists = n) sets
+-- the cells (default: the square root of the rows at build).
+CREATE FUNCTION arg_ivf_handler(internal) RETURNS index_am_handler
+  AS 'MODULE_PATHNAME', 'arg_ivf_handler' LANGUAGE C;
+
+CREATE ACCESS METHOD arg_ivf TYPE INDEX HANDLER arg_ivf_handler;
+
+COMMENT ON ACCESS METHOD arg_ivf IS
+  'approximate nearest sketches: ORDER BY sketch <~> query reads the arg.ivf_probes nearest cells';
+
+CREATE OPERATOR CLASS arg_sketch_ops DEFAULT FOR TYPE arg_sketch USING arg_ivf AS
+  OPERATOR 1 <~> (arg_sketch, arg_sketch) FOR ORDER BY float_ops;
+
 -- The two- or three-stage query over any table, as one call:
 --   SELECT (o).id, (o).title, sim
 --   FROM arg_knn(NULL::objects, 'descr', $1, 10, filter => '{"museum": "M7"}') AS k(o, sim);
@@ -449,6 +482,24 @@ BEGIN
         ELSE format(' AND t.%I = %L', item.key, item.value #>> '{}') END;
     END LOOP;
   END IF;
+  -- A sketch column with an arg_ivf index gives the shortlist straight from the index, when no
+  -- filter would remove most of what the index returns and no descriptor is asked for.
+  IF sketch IS NOT NULL AND filter IS NULL AND descriptor IS NULL AND EXISTS (
+       SELECT FROM pg_index i JOIN pg_class ic ON ic.oid = i.indexrelid
+         JOIN pg_am am ON am.oid = ic.relam AND am.amname = 'arg_ivf'
+         JOIN pg_attribute a ON a.attrelid = relid AND a.attname = sketch
+       WHERE i.indrelid = relid AND i.indisvalid AND i.indnatts = 1 AND i.indkey[0] = a.attnum) THEN
+    PERFORM set_config('enable_seqscan', 'off', true);
+    RETURN QUERY EXECUTE format(
+      'SELECT c.r, (c.r).%1$I <~> $1 AS sim
+       FROM (SELECT ROW(s.*)::%2$s AS r FROM (SELECT t.* FROM %2$s t WHERE t.%1$I IS NOT NULL
+                                               ORDER BY t.%3$I <~> $2 LIMIT $3) s) c
+       ORDER BY sim, (c.r).%1$I LIMIT $4',
+      col, relid::regclass, sketch)
+    USING query, sq, greatest(coalesce(shortlist, greatest(20 * k, 200)), k), k;
+    PERFORM set_config('enable_seqscan', seqscan, true);
+    RETURN;
+  END IF;
   IF descriptor IS NULL THEN
     nearest := format('arg_global(t.%I)', col);
     PERFORM set_config('enable_seqscan', 'off', true);
@@ -487,4 +538,4 @@ END
 $$;
 
 COMMENT ON FUNCTION arg_knn(anyelement, name, arg, int, int, jsonb, name, name, int) IS
-  'search in stages: the candidates nearest by arg_global (GiST index, or a stored descriptor column) by <#>, then with a stored arg_sketch column the shortlist nearest by arg_sketch_distance, ranked exactly by <~>; returns (row, sim), best first';
+  'search in stages: the candidates nearest by arg_global (GiST index, or a stored descriptor column) by <#>, then with a stored arg_sketch column the shortlist nearest by arg_sketch_distance (straight from an arg_ivf index on it, without filter or descriptor), ranked exactly by <~>; returns (row, sim), best first';

@@ -1,8 +1,11 @@
-// The extension's settings. Each one caps a resource or switches a cache; none changes a value
-// that a function returns, so results never depend on the session (IMMUTABLE stays true).
+// The extension's settings. Each one caps a resource, switches a cache or sets how much of an
+// arg_ivf index a search reads; none changes a value that a function returns, so results never
+// depend on the session (IMMUTABLE stays true).
 #include "arg_guc.hpp"
 
 #include <climits>
+
+#include "graph/sketch_cells.hpp"
 
 #include "arg_bridge.hpp"
 
@@ -22,6 +25,7 @@ int max_triangles = int(kDefaults.max_triangles);
 int max_texture_pixels = int(kDefaults.max_image_pixels);
 int build_threads = 1;
 bool query_cache = true;
+int ivf_probes_setting = 16;
 
 }  // namespace
 
@@ -53,6 +57,12 @@ void define_gucs() {
       "Keeps the deserialised ARG of an argument that repeats across calls, such as the query "
       "of ORDER BY descr <~> $1.",
       nullptr, &query_cache, true, PGC_USERSET, 0, nullptr, nullptr, nullptr);
+  DefineCustomIntVariable(
+      "arg.ivf_probes", "Cells of an arg_ivf index that a search reads.",
+      "More cells find more of the exact nearest and take longer; at least the index's lists "
+      "makes the search exact.",
+      &ivf_probes_setting, ivf_probes_setting, 1, int(arg::kMaxSketchCells), PGC_USERSET, 0,
+      nullptr, nullptr, nullptr);
   MarkGUCPrefixReserved("arg");
 }
 
@@ -71,6 +81,10 @@ int max_build_threads() {
 
 bool query_cache_enabled() {
   return query_cache;
+}
+
+int ivf_probes() {
+  return ivf_probes_setting;
 }
 
 }  // namespace argpg

@@ -1,4 +1,5 @@
-// The extension's settings (prefix "arg.", reserved): only knobs that never change a result.
+// The extension's settings (prefix "arg.", reserved): knobs that never change a function's
+// result.
 #pragma once
 
 #include "common/limits.hpp"
@@ -17,5 +18,8 @@ int max_build_threads();
 
 // arg.query_cache: keep the deserialised ARG of a repeated argument across calls.
 bool query_cache_enabled();
+
+// arg.ivf_probes: how many cells of an arg_ivf index a search reads.
+int ivf_probes();
 
 }  // namespace argpg

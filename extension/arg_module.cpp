@@ -3,6 +3,7 @@
 
 #include "arg_bridge.hpp"
 #include "arg_guc.hpp"
+#include "arg_ivf.hpp"
 #include "arg_vdb.hpp"
 
 extern "C" {
@@ -15,6 +16,7 @@ void _PG_init(void);
 void _PG_init(void) {
   argpg::define_gucs();
   argpg::register_distance_field();
+  argpg::ivf::define_reloptions();
 }
 
 PG_FUNCTION_INFO_V1(arg_version);

@@ -1,4 +1,4 @@
-// The `arg_sketch` type: text and binary forms, arg_sketch(arg) and arg_sketch_distance.
+// The `arg_sketch` type: text and binary forms, arg_sketch(arg), arg_sketch_distance and <~>.
 #include <type_traits>
 
 #include "graph/serialize.hpp"
@@ -49,6 +49,19 @@ const arg::ShapeSketch& sketch_arg(FunctionCallInfo fcinfo, DistanceCache* cache
   return s.sketch;
 }
 
+Datum distance(FunctionCallInfo fcinfo, const arg::Weights& weights) {
+  FmgrInfo* flinfo = fcinfo->flinfo;
+  if (!flinfo->fn_extra)
+    flinfo->fn_extra = MemoryContextAllocZero(flinfo->fn_mcxt, sizeof(DistanceCache));
+  auto* cache = static_cast<DistanceCache*>(flinfo->fn_extra);
+  const arg::ShapeSketch& a = sketch_arg(fcinfo, cache, 0);
+  const arg::ShapeSketch& b = sketch_arg(fcinfo, cache, 1);
+  double d = 0;
+  argpg::Outcome out = argpg::guarded([&] { d = arg::sketch_distance(a, b, weights); });
+  argpg::raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot compare arg_sketch values");
+  PG_RETURN_FLOAT8(d);
+}
+
 }  // namespace
 
 extern "C" {
@@ -59,6 +72,7 @@ PG_FUNCTION_INFO_V1(arg_sketch_recv);
 PG_FUNCTION_INFO_V1(arg_sketch_send);
 PG_FUNCTION_INFO_V1(arg_sketch);
 PG_FUNCTION_INFO_V1(arg_sketch_distance);
+PG_FUNCTION_INFO_V1(arg_sketch_dist);
 
 // Text to arg_sketch: "sketch1:" and base64, every byte checked.
 Datum arg_sketch_in(PG_FUNCTION_ARGS) {
@@ -123,17 +137,12 @@ Datum arg_sketch(PG_FUNCTION_ARGS) {
 // arg_sketch_distance(a arg_sketch, b arg_sketch, weights arg_weights DEFAULT 'arg') RETURNS
 // float8: SIM with its graph term replaced by the graph blocks' distance (shape_sketch.hpp).
 Datum arg_sketch_distance(PG_FUNCTION_ARGS) {
-  const arg::Weights weights = argpg::to_weights(*PG_GETARG_ARG_WEIGHTS_P(2));
-  FmgrInfo* flinfo = fcinfo->flinfo;
-  if (!flinfo->fn_extra)
-    flinfo->fn_extra = MemoryContextAllocZero(flinfo->fn_mcxt, sizeof(DistanceCache));
-  auto* cache = static_cast<DistanceCache*>(flinfo->fn_extra);
-  const arg::ShapeSketch& a = sketch_arg(fcinfo, cache, 0);
-  const arg::ShapeSketch& b = sketch_arg(fcinfo, cache, 1);
-  double d = 0;
-  argpg::Outcome out = argpg::guarded([&] { d = arg::sketch_distance(a, b, weights); });
-  argpg::raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot compare arg_sketch values");
-  PG_RETURN_FLOAT8(d);
+  return distance(fcinfo, argpg::to_weights(*PG_GETARG_ARG_WEIGHTS_P(2)));
+}
+
+// arg_sketch_dist(a, b), the operator <~>: the same with the default weights, as arg_ivf ranks.
+Datum arg_sketch_dist(PG_FUNCTION_ARGS) {
+  return distance(fcinfo, arg::Weights{});
 }
 
 }  // extern "C"

@@ -1,5 +1,6 @@
 -- arg_settings: the extension's settings, and what happens when input is refused or a query is
--- cancelled. Settings only cap resources or switch a cache; none changes a result.
+-- cancelled. Settings cap resources, switch a cache or set how much of an arg_ivf index a search
+-- reads; none changes a function's result.
 
 CREATE EXTENSION arg;
 

@@ -1,7 +1,7 @@
 -- The SQL contract of the extension: its objects, their signatures and their markings.
 BEGIN;
 CREATE EXTENSION IF NOT EXISTS arg CASCADE;
-SELECT plan(184);
+SELECT plan(195);
 
 SELECT has_extension('arg', 'the arg extension is installed');
 SELECT has_type('arg', 'type arg exists');
@@ -34,6 +34,8 @@ FROM unnest(ARRAY['=', '<>', '<', '<=', '>', '>=']) AS op;
 SELECT ok((SELECT oprcanhash FROM pg_operator
            WHERE oprname = '=' AND oprleft = 'arg'::regtype AND oprright = 'arg'::regtype),
           '= on arg can hash (hash joins, hashed DISTINCT and GROUP BY)');
+SELECT has_operator('arg_sketch', '<~>', 'arg_sketch', 'double precision',
+                    'operator arg_sketch <~> arg_sketch exists');
 SELECT has_opclass('arg_hash_ops', 'hash operator class for arg exists');
 SELECT has_opclass('arg_ops', 'btree operator class for arg exists');
 SELECT ok(EXISTS (SELECT 1 FROM pg_opclass c JOIN pg_am a ON a.oid = c.opcmethod
@@ -42,6 +44,22 @@ SELECT ok(EXISTS (SELECT 1 FROM pg_opclass c JOIN pg_am a ON a.oid = c.opcmethod
 SELECT ok(EXISTS (SELECT 1 FROM pg_opclass c JOIN pg_am a ON a.oid = c.opcmethod
                   WHERE c.opcname = 'arg_ops' AND a.amname = 'btree' AND c.opcdefault),
           'arg_ops is the default btree operator class of arg');
+
+-- The approximate index of sketches: an index access method ordering by <~>, whose default
+-- operator class passes its own check; arg.ivf_probes sets how many cells a search reads.
+SELECT ok(EXISTS (SELECT 1 FROM pg_am WHERE amname = 'arg_ivf' AND amtype = 'i'),
+          'index access method arg_ivf exists');
+SELECT ok(EXISTS (SELECT 1 FROM pg_opclass c JOIN pg_am a ON a.oid = c.opcmethod
+                  WHERE c.opcname = 'arg_sketch_ops' AND a.amname = 'arg_ivf' AND c.opcdefault
+                    AND c.opcintype = 'arg_sketch'::regtype),
+          'arg_sketch_ops is the default arg_ivf operator class of arg_sketch');
+SELECT ok((SELECT amvalidate(oid) FROM pg_opclass WHERE opcname = 'arg_sketch_ops'),
+          'arg_sketch_ops passes arg_ivf''s operator class check');
+SELECT ok(EXISTS (SELECT 1 FROM pg_amop o JOIN pg_opclass c ON c.opcfamily = o.amopfamily
+                  WHERE c.opcname = 'arg_sketch_ops' AND o.amoppurpose = 'o'
+                    AND o.amopopr = '<~>(arg_sketch,arg_sketch)'::regoperator),
+          'arg_sketch_ops orders by <~>');
+SELECT is(current_setting('arg.ivf_probes'), '16', 'arg.ivf_probes defaults to 16 cells');
 
 -- Every function of the SQL surface, with its signature and return type. Pure functions are
 -- IMMUTABLE STRICT PARALLEL SAFE, so they work in generated columns and parallel plans.
@@ -87,6 +105,8 @@ INSERT INTO surface VALUES
   ('arg_sketch_send(arg_sketch)', 'bytea', true),
   ('arg_sketch(arg)', 'arg_sketch', true),
   ('arg_sketch_distance(arg_sketch,arg_sketch,arg_weights)', 'double precision', true),
+  ('arg_sketch_dist(arg_sketch,arg_sketch)', 'double precision', true),
+  ('arg_ivf_handler(internal)', 'index_am_handler', false),
   ('arg_knn(anyelement,name,arg,integer,integer,jsonb,name,name,integer)',
    'TABLE(obj anyelement, sim double precision)', false),
   ('arg_index_trigger()', 'trigger', false),

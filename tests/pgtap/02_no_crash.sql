@@ -646,9 +646,44 @@ SELECT 'arg_index_trigger fed NULL, empty, random and truncated meshes',
        '^(00000|22...|54000)$'
 FROM pool WHERE typ = 'bytea'::regtype AND class IN ('NULL', 'empty', 'random', 'truncated');
 
+-- The arg_ivf index over every valid and unusual sketch of the pool, searched with each sketch of
+-- the pool as the query (a forged one: XX001) at one probe and at every cell; built over a table
+-- that holds a forged sketch, and given one on insert (XX001). The functions plan their query
+-- with sequential scans off, so that a table this small is searched through its index.
+CREATE TEMP TABLE ivf_rows AS
+SELECT id, v_sketch AS sk FROM pool WHERE typ = 'arg_sketch'::regtype AND class IN ('valid', 'unusual');
+CREATE INDEX ivf_rows_sk ON ivf_rows USING arg_ivf (sk) WITH (lists = 3);
+CREATE FUNCTION pg_temp.ivf_search(q arg_sketch, probes text) RETURNS bigint
+LANGUAGE plpgsql SET enable_seqscan = off AS $$
+BEGIN
+  PERFORM set_config('arg.ivf_probes', probes, true);
+  RETURN (SELECT count(*) FROM (SELECT id FROM pg_temp.ivf_rows ORDER BY sk <~> q LIMIT 100) s);
+END $$;
+CREATE FUNCTION pg_temp.ivf_build_with(extra arg_sketch) RETURNS bigint LANGUAGE plpgsql AS $$
+BEGIN
+  CREATE TEMP TABLE ivf_more AS SELECT sk FROM pg_temp.ivf_rows UNION ALL SELECT extra;
+  CREATE INDEX ivf_more_sk ON ivf_more USING arg_ivf (sk) WITH (lists = 2);
+  DROP TABLE ivf_more;
+  RETURN 1;
+END $$;
+INSERT INTO cases (description, queries, allowed)
+SELECT 'arg_ivf searched with every sketch of the pool as the query, 1 and 4096 probes',
+       array_agg(format('SELECT pg_temp.ivf_search(%s, %L)', pg_temp.value_sql(id), probes) ORDER BY id, probes),
+       '^(00000|XX001)$'
+FROM pool, unnest(ARRAY['1', '4096']) probes WHERE typ = 'arg_sketch'::regtype;
+INSERT INTO cases (description, queries, allowed)
+SELECT 'arg_ivf built over a table holding each sketch of the pool',
+       array_agg(format('SELECT pg_temp.ivf_build_with(%s)', pg_temp.value_sql(id)) ORDER BY id), '^(00000|XX001)$'
+FROM pool WHERE typ = 'arg_sketch'::regtype;
+INSERT INTO cases (description, queries, allowed)
+SELECT 'arg_ivf given each sketch of the pool on insert',
+       array_agg(format('WITH i AS (INSERT INTO pg_temp.ivf_rows VALUES (-1, %s) RETURNING 1) SELECT count(*) FROM i',
+                        pg_temp.value_sql(id)) ORDER BY id), '^(00000|XX001)$'
+FROM pool WHERE typ = 'arg_sketch'::regtype;
+
 -- The run ------------------------------------------------------------------------------------
 
-SELECT plan((SELECT count(*)::int FROM cases) + 11);
+SELECT plan((SELECT count(*)::int FROM cases) + 12);
 
 -- Every mesh builds; every texture builds with the textured OBJ.
 SELECT is(count(*)::int, 8, 'the cup in OFF, PLY (ASCII and binary), STL (ASCII and binary), OBJ (with and without texture coordinates) and GLB: each builds')
@@ -692,6 +727,9 @@ FROM valid WHERE name = 'GLB';
 SELECT ok(count(*) = 0, 'nothing was inserted by a failed trigger call') FROM trig;
 SELECT ok((SELECT count(*) FROM recv_arg) >= 1 AND (SELECT bool_and(arg_sim(v, v) = 0) FROM recv_arg),
           'what binary COPY let in are valid ARGs');
+SELECT ok(pg_stat_get_xact_numscans('pg_temp.ivf_rows_sk'::regclass)
+            >= (SELECT 2 * count(*) FROM pool WHERE typ = 'arg_sketch'::regtype AND class <> 'forged'),
+          'the arg_ivf searches went through the index');
 
 SELECT * FROM finish();
 ROLLBACK;

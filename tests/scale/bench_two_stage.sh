@@ -7,7 +7,9 @@
 # arg_global(descr) (with btree_gist, on (museum, arg_global(descr)) under the filter) or scans
 # a stored column glob = arg_global(descr). The three-stage search orders the scan's candidates
 # by arg_sketch_distance on a stored column sk = arg_sketch(descr) and ranks only a shortlist of
-# them by <~>. Then brute force with 0, 1 and 2 parallel workers.
+# them by <~>. The index search takes the shortlist straight from an arg_ivf index on sk (the
+# lists of the arg.ivf_probes cells nearest to the query). Then brute force with 0, 1 and 2
+# parallel workers.
 #
 #   tests/scale/bench_two_stage.sh [--existing]
 #
@@ -20,7 +22,9 @@
 #   QUERIES=20                  query models per table (spread over the ids; each is in the table)
 #   CANDIDATES="100 300 1000 3000"  candidate counts of the two-stage search
 #   SHORTLISTS="100 300"        shortlist counts of the three-stage search (each below a count
-#                               of CANDIDATES)
+#                               of CANDIDATES) and of the index search
+#   PROBES="8 16 32"            arg.ivf_probes of the index search (shown as its candidates;
+#                               the index has the default lists, the square root of the rows)
 #   PARALLEL_QUERIES=3          queries per worker count in the parallel measurement
 #   REUSE=1                     keep the database arg_scale_bench and its tables between runs
 #                               (and the extension as it was installed then: after changing
@@ -35,6 +39,7 @@ sizes=${SIZES:-"1000 10000 100000"}
 queries=${QUERIES:-20}
 candidates=${CANDIDATES:-"100 300 1000 3000"}
 shortlists=${SHORTLISTS:-"100 300"}
+probes=${PROBES:-"8 16 32"}
 par_queries=${PARALLEL_QUERIES:-3}
 gen_copy=${GEN_COPY:-$build/scale/gen100k.copy}
 shrec_copy=${SHREC_COPY:-$build/scale/shrec07.copy}
@@ -139,6 +144,12 @@ for t in "${tables[@]}"; do
     run -c "VACUUM ANALYZE $t"
     say "$(awk -v t="$t" -v a="$t0" -v b="$t1" -v c="$t2" 'BEGIN { printf "index build on %s: GiST (arg_global) %.1f s, GiST (museum, arg_global) %.1f s", t, b - a, c - b }')"
   fi
+  if [[ $(run -tA -c "SELECT count(*) FROM pg_indexes WHERE tablename = '$t' AND indexname = '${t}_sk_ivf'") == 0 ]]; then
+    t0=$(now)
+    run -c "SET maintenance_work_mem = '256MB'" -c "SET arg.max_build_threads = 2" \
+        -c "CREATE INDEX ${t}_sk_ivf ON $t USING arg_ivf (sk)"
+    say "$(awk -v t="$t" -v a="$t0" -v b="$(now)" 'BEGIN { printf "index build on %s: arg_ivf (sk), 2 threads, %.1f s", t, b - a }')"
+  fi
 done
 
 say ""
@@ -150,6 +161,7 @@ run -c "SELECT t AS table, n AS rows,
                          - pg_indexes_size(t::regclass)) AS toast,
           pg_size_pretty(pg_relation_size((t || '_global')::regclass)) AS gist_global,
           pg_size_pretty(pg_relation_size((t || '_museum_global')::regclass)) AS gist_museum_global,
+          pg_size_pretty(pg_relation_size((t || '_sk_ivf')::regclass)) AS arg_ivf_sk,
           (SELECT round(avg(pg_column_size(descr))) FROM (SELECT descr FROM $big LIMIT 1000) s) AS arg_bytes_avg_gen,
           (SELECT round(avg(pg_column_size(sk))) FROM (SELECT sk FROM $big LIMIT 1000) s) AS sketch_bytes_avg_gen,
           (SELECT count(*) FILTER (WHERE museum = 'M7') FROM $big) AS m7_rows_in_biggest
@@ -169,6 +181,7 @@ DECLARE
   q arg;
   c int;
   sl int;
+  p int;
   f bool;
   w text;
   r record;
@@ -208,6 +221,21 @@ BEGIN
         END LOOP;
       END LOOP;
     END LOOP;
+    FOREACH p IN ARRAY '{$(tr ' ' ',' <<<"$probes")}'::int[] LOOP
+      PERFORM set_config('arg.ivf_probes', p::text, true);
+      FOREACH sl IN ARRAY '{$(tr ' ' ',' <<<"$shortlists")}'::int[] LOOP
+        FOREACH f IN ARRAY ARRAY[false, true] LOOP
+          w := CASE WHEN f THEN 'WHERE museum = ''M7''' ELSE '' END;
+          SELECT * INTO r FROM bench_ids(format('WITH s AS MATERIALIZED (SELECT id, descr FROM %I %s
+                                   ORDER BY sk <~> arg_sketch(\$1) LIMIT %s)
+                                 SELECT id FROM s ORDER BY descr <~> \$1, id LIMIT 10', t, w, sl), q);
+          INSERT INTO bench_results VALUES (t, qid, 'arg_ivf, shortlist ' || sl, p, f, r.ids, r.ms);
+        END LOOP;
+      END LOOP;
+    END LOOP;
+    PERFORM set_config('arg.ivf_probes', '16', true);
+    SELECT * INTO r FROM bench_ids(format('SELECT (o).id FROM arg_knn(NULL::%I, ''descr'', \$1, 10, sketch => ''sk'') AS k(o, sim)', t), q);
+    INSERT INTO bench_results VALUES (t, qid, 'arg_knn, arg_ivf', 16, false, r.ids, r.ms);
     SELECT * INTO r FROM bench_ids(format('SELECT (o).id FROM arg_knn(NULL::%I, ''descr'', \$1, 10) AS k(o, sim)', t), q);
     INSERT INTO bench_results VALUES (t, qid, 'arg_knn, GiST', 1000, false, r.ids, r.ms);
     SELECT * INTO r FROM bench_ids(format('SELECT (o).id FROM arg_knn(NULL::%I, ''descr'', \$1, 10, filter => ''{"museum": "M7"}'') AS k(o, sim)', t), q);

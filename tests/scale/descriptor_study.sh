@@ -6,11 +6,16 @@
 #       tightness of the level-sum lower bound of SIM (tests/scale/descriptor_study.cpp)
 #   tests/scale/descriptor_study.sh --tune SET SET [SET ...]
 #       leave-one-set-out choice of the descriptor's block scales (descriptor_tuning.cpp)
+#   tests/scale/descriptor_study.sh --ivf SET [QUERIES]
+#       recall@10 of an arg_ivf search by cells and probes (ivf_study.cpp)
 # SET is a COPY file from `argtool scale-gen`, or a labelled set's labels.csv (model_id,path,
 # class), built once into $BUILD_DIR/scale/NAME.copy (cached ARGs in $BUILD_DIR/arg-cache).
 set -euo pipefail
 shopt -s inherit_errexit  # a failed compile or build inside $(...) stops the script
-usage() { echo "usage: $0 SET [MAX_MODELS [QUERIES]] | $0 --tune SET SET [SET ...]" >&2; exit 2; }
+usage() {
+  echo "usage: $0 SET [MAX_MODELS [QUERIES]] | $0 --tune SET SET [SET ...] | $0 --ivf SET [QUERIES]" >&2
+  exit 2
+}
 [[ $# -ge 1 ]] || usage
 # Paths as given, before the cd below.
 args=()
@@ -57,6 +62,12 @@ if [[ "$1" == --tune ]]; then
   files=()
   for s in "$@"; do files+=("$(copy_of "$s")"); done
   "$exe" "${files[@]}"
+elif [[ "$1" == --ivf ]]; then
+  [[ $# -ge 2 ]] || usage
+  exe=$(compile ivf_study)
+  file=$(copy_of "$2")
+  shift 2
+  "$exe" "$file" "$@"
 else
   exe=$(compile descriptor_study)
   file=$(copy_of "$1")

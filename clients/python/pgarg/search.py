@@ -55,14 +55,17 @@ def nearest(conn: psycopg.Connection[Any], table: TableName, query: Arg, k: int 
     given values (None: IS NULL); names are quoted as identifiers and values sent as
     parameters, never read as SQL.
 
-    Without `candidates` every row is compared (``ORDER BY descr <~> query``). With it, the
+    Without `candidates` or `sketch` every row is compared (``ORDER BY descr <~> query``). With
+    `candidates`, the
     search runs in two stages through the server's arg_knn: the `candidates` rows nearest by
     the global descriptor (``arg_global``, through a GiST index on ``arg_global(descr)``, or the
     stored cube column `descriptor`), ranked exactly by ``<~>``; there `where` is arg_knn's
     filter, whose values are compared as text (so JSON-serialisable scalars). With `sketch`
     (an arg_sketch column holding ``arg_sketch(descr)``) a third stage: the candidates are
     ordered by ``arg_sketch_distance`` and only the `shortlist` nearest (the server's default
-    when None) are ranked by ``<~>``. Needs register_arg(conn) first.
+    when None) are ranked by ``<~>``; when that column has an arg_ivf index and neither `where`
+    nor `descriptor` is given, the shortlist comes straight from the index (`candidates` may
+    then be left out). Needs register_arg(conn) first.
     """
     if not isinstance(query, Arg):
         raise TypeError("query must be an Arg (pgarg.build makes one from mesh bytes)")
@@ -76,9 +79,9 @@ def nearest(conn: psycopg.Connection[Any], table: TableName, query: Arg, k: int 
         raise ValueError("a column named sim would be hidden by the result's sim")
     if shortlist is not None and shortlist < 1:
         raise ValueError("shortlist must be at least 1")
-    if candidates is None and (sketch is not None or shortlist is not None):
-        raise ValueError("sketch and shortlist are stages after the candidates: give candidates too")
-    if candidates is None:
+    if shortlist is not None and sketch is None:
+        raise ValueError("a shortlist needs a sketch column (sketch=...)")
+    if candidates is None and sketch is None:
         conditions, params = _conditions(where or {})
         conditions.insert(0, sql.SQL("{} IS NOT NULL").format(sql.Identifier(column)))
         statement = sql.SQL(
@@ -89,7 +92,7 @@ def nearest(conn: psycopg.Connection[Any], table: TableName, query: Arg, k: int 
                 table=target, conditions=sql.SQL(" AND ").join(conditions))
         params = [query] + params + [k]
     else:
-        if candidates < 1:
+        if candidates is not None and candidates < 1:
             raise ValueError("candidates must be at least 1")
         fields = [sql.SQL("(k.o).{0} AS {0}").format(sql.Identifier(n)) for n in names]
         statement = sql.SQL(

@@ -125,10 +125,21 @@ def test_a_sketch_column_serves_a_third_stage(conn: psycopg.Connection[Any], cat
         with pytest.raises(psycopg.errors.UndefinedColumn):
             pgarg.nearest(conn, "search_sketched", query, candidates=50, sketch="title")
         with pytest.raises(ValueError):
-            pgarg.nearest(conn, "search_sketched", query, sketch="sk")
+            pgarg.nearest(conn, "search_sketched", query, shortlist=10)
         with pytest.raises(ValueError):
             pgarg.nearest(conn, "search_sketched", query, candidates=50, sketch="sk", shortlist=0)
+        # An arg_ivf index on the sketch gives the shortlist itself: no candidates needed. With
+        # every cell probed and every row on the shortlist, that is brute force again.
+        conn.execute("CREATE INDEX search_sketched_sk ON search_sketched USING arg_ivf (sk) WITH (lists = 4)")
+        conn.execute("SET arg.ivf_probes = 4")
+        indexed = pgarg.nearest(conn, "search_sketched", query, k=5, sketch="sk", shortlist=50)
+        assert indexed == brute
+        conn.execute("SET arg.ivf_probes = 1")  # one cell: only the query's own cell's rows
+        one_cell = pgarg.nearest(conn, "search_sketched", query, k=50, sketch="sk", shortlist=50)
+        assert 0 < len(one_cell) < len(pgarg.nearest(conn, catalogue, query, k=50))
+        assert one_cell[0] == brute[0]
     finally:
+        conn.execute("RESET arg.ivf_probes")
         conn.execute("DROP TABLE search_sketched")
 
 

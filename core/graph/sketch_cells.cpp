@@ -1,0 +1,69 @@
+// Cells of an inverted-file index over sketches (k-means++ seeded centres, nearest-centre
+// filing, probing).
+#include "graph/sketch_cells.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <utility>
+
+#include "common/random.hpp"
+
+namespace arg {
+
+std::vector<std::size_t> choose_cell_centres(const ShapeSketch* sample, std::size_t size,
+                                             std::size_t count, std::uint64_t seed,
+                                             const StopRequested& stop) {
+  std::vector<std::size_t> centres;
+  if (size == 0 || count == 0) return centres;
+  SeededRandom random(seed);
+  centres.push_back(std::size_t(random.bits() % size));
+  // nearest[s]: squared distance of sample s to its nearest centre so far.
+  std::vector<double> nearest(size, 0);
+  for (std::size_t s = 0; s < size; ++s) {
+    const double d = sketch_distance(sample[s], sample[centres[0]]);
+    nearest[s] = d * d;
+  }
+  while (centres.size() < count) {
+    check_interrupt(stop);
+    const double total = std::accumulate(nearest.begin(), nearest.end(), 0.0);
+    if (!(total > 0)) break;  // every sample lies on a centre
+    const double target = random.unit() * total;
+    double sum = 0;
+    std::size_t pick = size;
+    for (std::size_t s = 0; s < size; ++s) {
+      if (nearest[s] <= 0) continue;
+      sum += nearest[s];
+      pick = s;  // the last positive one when rounding leaves target above every sum
+      if (sum > target) break;
+    }
+    centres.push_back(pick);
+    for (std::size_t s = 0; s < size; ++s) {
+      const double d = sketch_distance(sample[s], sample[pick]);
+      nearest[s] = std::min(nearest[s], d * d);
+    }
+  }
+  return centres;
+}
+
+std::size_t nearest_cell(const ShapeSketch& sketch, const ShapeSketch* centres, std::size_t count) {
+  std::size_t best = 0;
+  double best_d = sketch_distance(sketch, centres[0]);
+  for (std::size_t c = 1; c < count; ++c) {
+    const double d = sketch_distance(sketch, centres[c]);
+    if (d < best_d) best = c, best_d = d;
+  }
+  return best;
+}
+
+std::vector<std::size_t> cells_to_probe(const ShapeSketch& query, const ShapeSketch* centres,
+                                        std::size_t count, std::size_t probes) {
+  std::vector<std::pair<double, std::size_t>> by_distance(count);
+  for (std::size_t c = 0; c < count; ++c) by_distance[c] = {sketch_distance(query, centres[c]), c};
+  const std::size_t keep = std::min(probes, count);
+  std::partial_sort(by_distance.begin(), by_distance.begin() + keep, by_distance.end());
+  std::vector<std::size_t> cells(keep);
+  for (std::size_t k = 0; k < keep; ++k) cells[k] = by_distance[k].second;
+  return cells;
+}
+
+}  // namespace arg

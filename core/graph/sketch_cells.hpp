@@ -1,0 +1,36 @@
+// Cells of an inverted-file index over sketches: centres, filing a sketch, the cells to probe.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "common/limits.hpp"
+#include "graph/shape_sketch.hpp"
+
+namespace arg {
+
+// Most cells an index may have (the reloption's bound): a query reads every centre.
+inline constexpr std::size_t kMaxSketchCells = 4096;
+
+// Chooses up to `count` centres among the `size` sketches of `sample` (indices into it, distinct,
+// in the order chosen) by k-means++ seeding under sketch_distance: the first at random, each next
+// one with a chance proportional to its squared distance to the nearest centre chosen so far. The
+// distance is not a norm, so there is no mean to move a centre to; a centre is a member, and
+// seeding alone spreads the centres over the sample's dense regions. Fewer centres than
+// `count` when the sample has fewer distinct sketches (duplicates are never two centres).
+// The same sample and seed give the same centres. Polls `stop` once a centre.
+std::vector<std::size_t> choose_cell_centres(const ShapeSketch* sample, std::size_t size,
+                                             std::size_t count, std::uint64_t seed,
+                                             const StopRequested& stop = {});
+
+// The cell of `sketch`: the index of its nearest centre by sketch_distance with default
+// weights (the lowest index among equals). `count` must be at least 1.
+std::size_t nearest_cell(const ShapeSketch& sketch, const ShapeSketch* centres, std::size_t count);
+
+// The `probes` cells nearest to `query` (all `count` of them when probes >= count), nearest
+// first, ties by index: the cells a search reads.
+std::vector<std::size_t> cells_to_probe(const ShapeSketch& query, const ShapeSketch* centres,
+                                        std::size_t count, std::size_t probes);
+
+}  // namespace arg

@@ -1,0 +1,139 @@
+// The arg_ivf index over arg_sketch: its pages, their checks, and the pieces its build, insert,
+// scan and vacuum share.
+//
+// An inverted file: block 0 is the metapage; blocks 1 .. cell_pages hold the cells, one item
+// each (its list's first and last page, then its centre's sketch bytes); every other page
+// belongs to one cell's list, a chain of pages of entries (a heap row's address, then its
+// sketch's bytes, as the table stores them). A search reads every centre, then the lists of the
+// `arg.ivf_probes` nearest, and returns their rows by arg_sketch_distance. Every page and item
+// is checked when read (kind, sizes, links, the sketch by its strict reader), and every change
+// is WAL-logged with generic WAL records.
+#pragma once
+
+#include "graph/shape_sketch.hpp"
+
+#include "arg_bridge.hpp"
+#include "arg_guc.hpp"
+
+// The buffer manager's headers bring in the spinlock code, whose `register` C++17 refuses; for
+// the rest of each file, whose later PostgreSQL headers bring it in too.
+#pragma GCC diagnostic ignored "-Wregister"
+extern "C" {
+#include "access/genam.h"
+#include "access/generic_xlog.h"
+#include "storage/bufmgr.h"
+#include "storage/bufpage.h"
+#include "utils/rel.h"
+}
+
+namespace argpg::ivf {
+
+inline constexpr uint32 kMagic = 0x41524749;  // "ARGI"
+inline constexpr uint32 kVersion = 1;
+inline constexpr uint16 kPageId = 0xA6F1;  // in every page's special space
+enum PageKind : uint16 { kMetaPage = 1, kCellPage = 2, kListPage = 3 };
+
+// The largest sketch an entry or a centre may hold: three fit a page. A sketch with every part
+// is 2,588 bytes.
+inline constexpr Size kMaxSketchBytes = 2600;
+
+// A page's special space.
+struct PageOpaque {
+  BlockNumber next;  // a list page's next page, InvalidBlockNumber at the end; unused otherwise
+  uint16 kind;
+  uint16 page_id;
+};
+
+// The metapage's contents.
+struct Meta {
+  uint32 magic;
+  uint32 version;
+  uint32 cells;       // >= 1
+  uint32 cell_pages;  // blocks 1 .. cell_pages
+};
+
+// A cell item's head; the centre's sketch bytes follow (none for the one cell of an index
+// built on an empty table, which every row joins).
+struct CellHead {
+  BlockNumber first, last;  // both InvalidBlockNumber while the list is empty
+};
+
+// An entry's head; the sketch bytes follow.
+struct EntryHead {
+  ItemPointerData tid;
+};
+
+// Where a cell is, its list, and its centre (when `has_centre`).
+struct CellRef {
+  BlockNumber page;
+  OffsetNumber item;
+  bool has_centre;
+  BlockNumber first, last;
+};
+
+// An index's cells, read from its pages; centres are palloc'd plain data, cells[i]'s centre is
+// centres[i] (unset without a centre).
+struct Cells {
+  uint32 count;
+  CellRef* refs;
+  arg::ShapeSketch* centres;  // nullptr when read without centres
+};
+
+// Reads and checks the metapage; raises XX002 (index corrupted) or, for another page version,
+// 0A000 with a hint to REINDEX.
+Meta read_meta(Relation index);
+
+// Reads the metapage and every cell (their centres too when `with_centres`), checking every
+// byte; raises XX002 (index corrupted) naming what is wrong.
+Cells read_cells(Relation index, bool with_centres);
+
+// A new page of `kind` at the end of the index's `fork`, exclusively locked, registered in
+// `state` as a full image and initialised.
+Buffer new_page(Relation index, ForkNumber fork, GenericXLogState* state, PageKind kind,
+                Page* page);
+
+// Checks that `page` (block `block`) is a page of `kind` of an arg_ivf index; raises XX002.
+void check_page(Relation index, Page page, BlockNumber block, PageKind kind);
+
+// Reads a cell item (its head and centre bytes) at `item` of a checked cell page of an index of
+// `blocks` blocks; raises XX002.
+CellHead read_cell_item(Relation index, BlockNumber blocks, Page page, BlockNumber block,
+                        OffsetNumber item, const char** centre, Size* centre_size);
+
+// An entry of a checked list page: its row and sketch bytes; raises XX002 when malformed.
+void read_entry(Relation index, Page page, BlockNumber block, OffsetNumber item,
+                ItemPointerData* tid, const char** sketch, Size* sketch_size);
+
+// Appends an entry for (`tid`, `sketch`) to the list of `cell`, extending it by a page when
+// its last page is full; WAL-logged.
+void append_entry(Relation index, const CellRef& cell, ItemPointer tid, const char* sketch,
+                  Size sketch_size);
+
+// Reads the sketch bytes of an indexed value into `out`; raises XX001 when it is not one.
+void read_value(Datum value, arg::ShapeSketch& out);
+
+// Raises XX002 "index "name" is corrupted: <what> at block B".
+[[noreturn]] void corrupted(Relation index, BlockNumber block, const char* what);
+
+}  // namespace argpg::ivf
+
+namespace argpg::ivf {
+// Registers the reloption `lists`; called once from _PG_init.
+void define_reloptions();
+}  // namespace argpg::ivf
+
+// The access method's entry points (arg_ivf_*.cpp).
+extern "C" {
+IndexBuildResult* arg_ivf_build(Relation heap, Relation index, IndexInfo* info);
+void arg_ivf_buildempty(Relation index);
+bool arg_ivf_insert(Relation index, Datum* values, bool* isnull, ItemPointer heap_tid,
+                    Relation heap, IndexUniqueCheck check_unique, bool index_unchanged,
+                    IndexInfo* info);
+IndexScanDesc arg_ivf_beginscan(Relation index, int nkeys, int norderbys);
+void arg_ivf_rescan(IndexScanDesc scan, ScanKey keys, int nkeys, ScanKey orderbys, int norderbys);
+bool arg_ivf_gettuple(IndexScanDesc scan, ScanDirection dir);
+void arg_ivf_endscan(IndexScanDesc scan);
+IndexBulkDeleteResult* arg_ivf_bulkdelete(IndexVacuumInfo* info, IndexBulkDeleteResult* stats,
+                                          IndexBulkDeleteCallback callback, void* state);
+IndexBulkDeleteResult* arg_ivf_vacuumcleanup(IndexVacuumInfo* info, IndexBulkDeleteResult* stats);
+}

@@ -1,0 +1,168 @@
+// The arg_ivf access method: its handler, reloption, cost estimate and opclass check.
+#include <algorithm>
+
+#include "graph/sketch_cells.hpp"
+
+#include "arg_ivf.hpp"
+
+extern "C" {
+#include "access/amapi.h"
+#include "access/htup_details.h"
+#include "access/reloptions.h"
+#include "catalog/pg_amop.h"
+#include "catalog/pg_opclass.h"
+#include "catalog/pg_type.h"
+#include "commands/vacuum.h"
+#include "optimizer/optimizer.h"
+#include "utils/catcache.h"
+#include "utils/float.h"
+#include "utils/lsyscache.h"
+#include "utils/selfuncs.h"
+#include "utils/spccache.h"
+#include "utils/syscache.h"
+}
+
+namespace argpg::ivf {
+
+namespace {
+
+relopt_kind lists_kind;
+
+struct Options {
+  int32 vl_len_;
+  int lists;
+};
+
+bytea* options(Datum reloptions, bool validate) {
+  static const relopt_parse_elt table[] = {{"lists", RELOPT_TYPE_INT, offsetof(Options, lists)}};
+  return static_cast<bytea*>(
+      build_reloptions(reloptions, validate, lists_kind, sizeof(Options), table, 1));
+}
+
+uint32 cells_of(Oid index_oid) {
+  Relation index = index_open(index_oid, AccessShareLock);
+  const Meta meta = read_meta(index);
+  index_close(index, AccessShareLock);
+  return meta.cells;
+}
+
+// All of a search's work comes before its first row: the centres, then the probed share of
+// the lists' pages and entries, one sketch distance each (arg_sketch_distance's COST 20).
+void cost_estimate(PlannerInfo* root, IndexPath* path, double loop_count, Cost* startup,
+                   Cost* total, Selectivity* selectivity, double* correlation, double* pages) {
+  if (path->indexorderbys == NIL) {  // nothing but ORDER BY <~> uses it
+    *startup = *total = get_float8_infinity();
+    *selectivity = 0;
+    *correlation = 0;
+    *pages = 0;
+    return;
+  }
+  GenericCosts costs{};
+  genericcostestimate(root, path, loop_count, &costs);
+  const uint32 cells = cells_of(path->indexinfo->indexoid);
+  const double share = std::min(1.0, double(argpg::ivf_probes()) / double(cells));
+  double seq_page_cost;
+  get_tablespace_page_costs(path->indexinfo->reltablespace, nullptr, &seq_page_cost);
+  const double distance = 20 * cpu_operator_cost;
+  const double entries = share * path->indexinfo->tuples;
+  *startup = share * double(path->indexinfo->pages) * seq_page_cost +
+             entries * (cpu_index_tuple_cost + distance) + double(cells) * distance;
+  *total = *startup + entries * cpu_tuple_cost;
+  *selectivity = costs.indexSelectivity;
+  *correlation = 0;
+  *pages = share * double(path->indexinfo->pages);
+}
+
+// The opclass orders arg_sketch by one operator and needs no support function.
+bool validate(Oid opclass) {
+  HeapTuple tuple = SearchSysCache1(CLAOID, ObjectIdGetDatum(opclass));
+  if (!HeapTupleIsValid(tuple)) return false;
+  const auto* form = reinterpret_cast<Form_pg_opclass>(GETSTRUCT(tuple));
+  const Oid family = form->opcfamily, type = form->opcintype;
+  ReleaseSysCache(tuple);
+  HeapTuple type_tuple = SearchSysCache1(TYPEOID, ObjectIdGetDatum(type));
+  if (!HeapTupleIsValid(type_tuple)) return false;
+  const bool sketch =
+      std::strcmp(NameStr(reinterpret_cast<Form_pg_type>(GETSTRUCT(type_tuple))->typname),
+                  "arg_sketch") == 0;
+  ReleaseSysCache(type_tuple);
+  CatCList* ops = SearchSysCacheList1(AMOPSTRATEGY, ObjectIdGetDatum(family));
+  bool ok = sketch && ops->n_members == 1;
+  for (int i = 0; i < ops->n_members; ++i) {
+    const auto* op = reinterpret_cast<Form_pg_amop>(GETSTRUCT(&ops->members[i]->tuple));
+    ok = ok && op->amoppurpose == AMOP_ORDER && op->amopstrategy == 1;
+  }
+  ReleaseSysCacheList(ops);
+  return ok;
+}
+
+}  // namespace
+
+int lists_option(Relation index) {
+  const auto* o = reinterpret_cast<const Options*>(index->rd_options);
+  return o ? o->lists : 0;
+}
+
+void define_reloptions() {
+  lists_kind = add_reloption_kind();
+  add_int_reloption(lists_kind, "lists",
+                    "Cells of an arg_ivf index (0: the square root of the rows at build)", 0, 0,
+                    int(arg::kMaxSketchCells), AccessExclusiveLock);
+}
+
+}  // namespace argpg::ivf
+
+extern "C" {
+
+PG_FUNCTION_INFO_V1(arg_ivf_handler);
+
+Datum arg_ivf_handler(PG_FUNCTION_ARGS) {
+  IndexAmRoutine* am = makeNode(IndexAmRoutine);
+  am->amstrategies = 0;
+  am->amsupport = 0;
+  am->amoptsprocnum = 0;
+  am->amcanorder = false;
+  am->amcanorderbyop = true;
+  am->amcanbackward = false;
+  am->amcanunique = false;
+  am->amcanmulticol = false;
+  am->amoptionalkey = true;
+  am->amsearcharray = false;
+  am->amsearchnulls = false;
+  am->amstorage = false;
+  am->amclusterable = false;
+  am->ampredlocks = false;
+  am->amcanparallel = false;
+  am->amcaninclude = false;
+  am->amusemaintenanceworkmem = false;
+#if PG_VERSION_NUM >= 160000
+  am->amsummarizing = false;
+#endif
+  am->amparallelvacuumoptions = VACUUM_OPTION_PARALLEL_BULKDEL;
+  am->amkeytype = InvalidOid;
+  am->ambuild = arg_ivf_build;
+  am->ambuildempty = arg_ivf_buildempty;
+  am->aminsert = arg_ivf_insert;
+  am->ambulkdelete = arg_ivf_bulkdelete;
+  am->amvacuumcleanup = arg_ivf_vacuumcleanup;
+  am->amcanreturn = nullptr;
+  am->amcostestimate = argpg::ivf::cost_estimate;
+  am->amoptions = argpg::ivf::options;
+  am->amproperty = nullptr;
+  am->ambuildphasename = nullptr;
+  am->amvalidate = argpg::ivf::validate;
+  am->amadjustmembers = nullptr;
+  am->ambeginscan = arg_ivf_beginscan;
+  am->amrescan = arg_ivf_rescan;
+  am->amgettuple = arg_ivf_gettuple;
+  am->amgetbitmap = nullptr;
+  am->amendscan = arg_ivf_endscan;
+  am->ammarkpos = nullptr;
+  am->amrestrpos = nullptr;
+  am->amestimateparallelscan = nullptr;
+  am->aminitparallelscan = nullptr;
+  am->amparallelrescan = nullptr;
+  PG_RETURN_POINTER(am);
+}
+
+}  // extern "C"

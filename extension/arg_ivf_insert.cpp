@@ -1,0 +1,36 @@
+// Inserting into an arg_ivf index: a new row joins the list of its nearest centre.
+#include "graph/sketch_cells.hpp"
+
+#include "arg_ivf.hpp"
+
+extern "C" {
+#include "utils/memutils.h"
+}
+
+using namespace argpg::ivf;
+
+extern "C" {
+
+bool arg_ivf_insert(Relation index, Datum* values, bool* isnull, ItemPointer heap_tid, Relation,
+                    IndexUniqueCheck, bool, IndexInfo*) {
+  if (isnull[0]) return false;  // NULL sketches are not indexed
+  MemoryContext memory =
+      AllocSetContextCreate(CurrentMemoryContext, "arg_ivf insert", ALLOCSET_DEFAULT_SIZES);
+  MemoryContext caller = MemoryContextSwitchTo(memory);
+  auto* sketch = static_cast<arg::ShapeSketch*>(palloc(sizeof(arg::ShapeSketch)));
+  read_value(values[0], *sketch);
+  const Cells cells = read_cells(index, true);
+  std::size_t cell = 0;
+  if (cells.refs[0].has_centre) {
+    argpg::Outcome out =
+        argpg::guarded([&] { cell = arg::nearest_cell(*sketch, cells.centres, cells.count); });
+    argpg::raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot compare arg_sketch values");
+  }
+  varlena* v = PG_DETOAST_DATUM_PACKED(values[0]);
+  append_entry(index, cells.refs[cell], heap_tid, VARDATA_ANY(v), VARSIZE_ANY_EXHDR(v));
+  MemoryContextSwitchTo(caller);
+  MemoryContextDelete(memory);
+  return false;
+}
+
+}  // extern "C"

@@ -1,0 +1,215 @@
+// The arg_ivf index's pages: checked reads of the metapage, cells and entries, new pages, and
+// appending an entry to a cell's list.
+#include "graph/sketch_cells.hpp"
+
+#include "arg_ivf.hpp"
+
+extern "C" {
+#include "storage/lmgr.h"
+#include "utils/memutils.h"
+}
+
+namespace argpg::ivf {
+
+Meta read_meta(Relation index) {
+  Buffer buf = ReadBuffer(index, 0);
+  LockBuffer(buf, BUFFER_LOCK_SHARE);
+  Page page = BufferGetPage(buf);
+  check_page(index, page, 0, kMetaPage);
+  Meta meta;
+  if (((PageHeader)page)->pd_lower < SizeOfPageHeaderData + sizeof(Meta))
+    corrupted(index, 0, "metapage too short");
+  std::memcpy(&meta, PageGetContents(page), sizeof meta);
+  UnlockReleaseBuffer(buf);
+  if (meta.magic != kMagic) corrupted(index, 0, "not an arg_ivf metapage");
+  if (meta.version != kVersion)
+    ereport(ERROR, (errcode(ERRCODE_FEATURE_NOT_SUPPORTED),
+                    errmsg("index \"%s\" has arg_ivf page version %u, this build reads %u",
+                           RelationGetRelationName(index), meta.version, kVersion),
+                    errhint("REINDEX it.")));
+  const BlockNumber blocks = RelationGetNumberOfBlocks(index);
+  if (meta.cells < 1 || meta.cells > arg::kMaxSketchCells || meta.cell_pages < 1 ||
+      meta.cell_pages > meta.cells || meta.cell_pages >= blocks)
+    corrupted(index, 0, "cell counts out of range");
+  return meta;
+}
+
+void corrupted(Relation index, BlockNumber block, const char* what) {
+  ereport(ERROR, (errcode(ERRCODE_INDEX_CORRUPTED),
+                  errmsg("index \"%s\" is corrupted: %s at block %u",
+                         RelationGetRelationName(index), what, block),
+                  errhint("REINDEX it.")));
+  pg_unreachable();
+}
+
+void check_page(Relation index, Page page, BlockNumber block, PageKind kind) {
+  if (PageIsNew(page)) corrupted(index, block, "page never initialised");
+  if (PageGetSpecialSize(page) != MAXALIGN(sizeof(PageOpaque)))
+    corrupted(index, block, "page of another index type");
+  const auto* opaque = reinterpret_cast<const PageOpaque*>(PageGetSpecialPointer(page));
+  if (opaque->page_id != kPageId) corrupted(index, block, "page of another index type");
+  if (opaque->kind != kind) corrupted(index, block, "page of the wrong kind");
+}
+
+Buffer new_page(Relation index, ForkNumber fork, GenericXLogState* state, PageKind kind,
+                Page* page) {
+#if PG_VERSION_NUM >= 160000
+  Buffer buf = ExtendBufferedRel(BMR_REL(index), fork, nullptr, EB_LOCK_FIRST);
+#else
+  // The extension lock keeps two backends from adding the same block.
+  LockRelationForExtension(index, ExclusiveLock);
+  Buffer buf = ReadBufferExtended(index, fork, P_NEW, RBM_NORMAL, nullptr);
+  LockBuffer(buf, BUFFER_LOCK_EXCLUSIVE);
+  UnlockRelationForExtension(index, ExclusiveLock);
+#endif
+  *page = GenericXLogRegisterBuffer(state, buf, GENERIC_XLOG_FULL_IMAGE);
+  PageInit(*page, BLCKSZ, sizeof(PageOpaque));
+  auto* opaque = reinterpret_cast<PageOpaque*>(PageGetSpecialPointer(*page));
+  opaque->next = InvalidBlockNumber;
+  opaque->kind = kind;
+  opaque->page_id = kPageId;
+  return buf;
+}
+
+CellHead read_cell_item(Relation index, BlockNumber blocks, Page page, BlockNumber block,
+                        OffsetNumber item, const char** centre, Size* centre_size) {
+  if (item < FirstOffsetNumber || item > PageGetMaxOffsetNumber(page))
+    corrupted(index, block, "cell item out of range");
+  ItemId id = PageGetItemId(page, item);
+  if (!ItemIdIsNormal(id) || ItemIdGetLength(id) < sizeof(CellHead) ||
+      ItemIdGetLength(id) > sizeof(CellHead) + kMaxSketchBytes)
+    corrupted(index, block, "cell item of a wrong size");
+  const char* data = static_cast<const char*>(PageGetItem(page, id));
+  CellHead head;
+  std::memcpy(&head, data, sizeof head);
+  *centre = data + sizeof head;
+  *centre_size = ItemIdGetLength(id) - sizeof head;
+  const bool empty = head.first == InvalidBlockNumber;
+  if (empty != (head.last == InvalidBlockNumber) ||
+      (!empty &&
+       (head.first >= blocks || head.last >= blocks || head.first == 0 || head.last == 0)))
+    corrupted(index, block, "cell's list links out of range");
+  return head;
+}
+
+void read_entry(Relation index, Page page, BlockNumber block, OffsetNumber item,
+                ItemPointerData* tid, const char** sketch, Size* sketch_size) {
+  ItemId id = PageGetItemId(page, item);
+  if (!ItemIdIsNormal(id) || ItemIdGetLength(id) <= sizeof(EntryHead) ||
+      ItemIdGetLength(id) > sizeof(EntryHead) + kMaxSketchBytes)
+    corrupted(index, block, "entry of a wrong size");
+  const char* data = static_cast<const char*>(PageGetItem(page, id));
+  std::memcpy(tid, data, sizeof(EntryHead));
+  if (!ItemPointerIsValid(tid)) corrupted(index, block, "entry's row address invalid");
+  *sketch = data + sizeof(EntryHead);
+  *sketch_size = ItemIdGetLength(id) - sizeof(EntryHead);
+}
+
+Cells read_cells(Relation index, bool with_centres) {
+  const Meta meta = read_meta(index);
+  Cells cells;
+  cells.count = meta.cells;
+  cells.refs = static_cast<CellRef*>(palloc(sizeof(CellRef) * meta.cells));
+  cells.centres = with_centres ? static_cast<arg::ShapeSketch*>(MemoryContextAllocHuge(
+                                     CurrentMemoryContext, sizeof(arg::ShapeSketch) * meta.cells))
+                               : nullptr;
+  uint32 seen = 0;
+  const BlockNumber blocks = RelationGetNumberOfBlocks(index);
+  for (BlockNumber block = 1; block <= meta.cell_pages; ++block) {
+    Buffer buf = ReadBuffer(index, block);
+    LockBuffer(buf, BUFFER_LOCK_SHARE);
+    Page page = BufferGetPage(buf);
+    check_page(index, page, block, kCellPage);
+    const OffsetNumber items = PageGetMaxOffsetNumber(page);
+    if (items < 1 || items > meta.cells - seen) corrupted(index, block, "cell count wrong");
+    for (OffsetNumber item = FirstOffsetNumber; item <= items; ++item) {
+      const char* centre;
+      Size size;
+      const CellHead head = read_cell_item(index, blocks, page, block, item, &centre, &size);
+      CellRef& ref = cells.refs[seen];
+      ref = {block, item, size > 0, head.first, head.last};
+      if (size == 0 && meta.cells != 1) corrupted(index, block, "cell without a centre");
+      if (with_centres && size > 0) {
+        Outcome out = guarded(
+            [&] { arg::read_shape_sketch(std::string_view(centre, size), cells.centres[seen]); });
+        if (out.failure != Failure::None) {
+          UnlockReleaseBuffer(buf);
+          corrupted(index, block, psprintf("cell centre unreadable (%s)", out.message));
+        }
+      }
+      ++seen;
+    }
+    UnlockReleaseBuffer(buf);
+  }
+  if (seen != meta.cells) corrupted(index, meta.cell_pages, "fewer cells than the metapage says");
+  return cells;
+}
+
+void append_entry(Relation index, const CellRef& cell, ItemPointer tid, const char* sketch,
+                  Size sketch_size) {
+  if (sketch_size == 0 || sketch_size > kMaxSketchBytes)
+    ereport(ERROR, (errcode(ERRCODE_PROGRAM_LIMIT_EXCEEDED),
+                    errmsg("arg_sketch of %zu bytes does not fit an arg_ivf entry", sketch_size)));
+  const Size entry_size = sizeof(EntryHead) + sketch_size;
+  char* entry = static_cast<char*>(palloc(entry_size));
+  std::memcpy(entry, tid, sizeof(EntryHead));
+  std::memcpy(entry + sizeof(EntryHead), sketch, sketch_size);
+
+  // The cell page stays locked while its list grows, so two appends to one cell take turns;
+  // locks go cell page first, then list pages, as everywhere.
+  Buffer cell_buf = ReadBuffer(index, cell.page);
+  LockBuffer(cell_buf, BUFFER_LOCK_EXCLUSIVE);
+  Page cell_page = BufferGetPage(cell_buf);
+  check_page(index, cell_page, cell.page, kCellPage);
+  const char* centre;
+  Size centre_size;
+  CellHead head = read_cell_item(index, RelationGetNumberOfBlocks(index), cell_page, cell.page,
+                                 cell.item, &centre, &centre_size);
+
+  Buffer last_buf = InvalidBuffer;
+  if (head.last != InvalidBlockNumber) {
+    last_buf = ReadBuffer(index, head.last);
+    LockBuffer(last_buf, BUFFER_LOCK_EXCLUSIVE);
+    Page last = BufferGetPage(last_buf);
+    check_page(index, last, head.last, kListPage);
+    if (reinterpret_cast<PageOpaque*>(PageGetSpecialPointer(last))->next != InvalidBlockNumber)
+      corrupted(index, head.last, "a list's last page links on");
+  }
+  GenericXLogState* state = GenericXLogStart(index);
+  Buffer new_buf = InvalidBuffer;
+  Page target;
+  if (BufferIsValid(last_buf) &&
+      PageGetFreeSpace(BufferGetPage(last_buf)) >= MAXALIGN(entry_size)) {
+    target = GenericXLogRegisterBuffer(state, last_buf, 0);
+  } else {
+    new_buf = new_page(index, MAIN_FORKNUM, state, kListPage, &target);
+    const BlockNumber added = BufferGetBlockNumber(new_buf);
+    if (BufferIsValid(last_buf)) {
+      Page last = GenericXLogRegisterBuffer(state, last_buf, 0);
+      reinterpret_cast<PageOpaque*>(PageGetSpecialPointer(last))->next = added;
+    }
+    Page cp = GenericXLogRegisterBuffer(state, cell_buf, 0);
+    if (head.first == InvalidBlockNumber) head.first = added;
+    head.last = added;
+    std::memcpy(PageGetItem(cp, PageGetItemId(cp, cell.item)), &head, sizeof head);
+  }
+  if (PageAddItem(target, entry, entry_size, InvalidOffsetNumber, false, false) ==
+      InvalidOffsetNumber) {
+    GenericXLogAbort(state);
+    elog(ERROR, "arg_ivf: could not add an entry to index \"%s\"", RelationGetRelationName(index));
+  }
+  GenericXLogFinish(state);
+  if (BufferIsValid(new_buf)) UnlockReleaseBuffer(new_buf);
+  if (BufferIsValid(last_buf)) UnlockReleaseBuffer(last_buf);
+  UnlockReleaseBuffer(cell_buf);
+  pfree(entry);
+}
+
+void read_value(Datum value, arg::ShapeSketch& out) {
+  varlena* v = PG_DETOAST_DATUM_PACKED(value);
+  Outcome result = guarded([&] { arg::read_shape_sketch(view(v), out); });
+  if (v != reinterpret_cast<varlena*>(DatumGetPointer(value))) pfree(v);
+  raise_if_failed(result, ERRCODE_DATA_CORRUPTED, "cannot read arg_sketch");
+}
+
+}  // namespace argpg::ivf

@@ -1,0 +1,80 @@
+// VACUUM of an arg_ivf index: entries of removed rows leave their list pages.
+#include "graph/sketch_cells.hpp"
+
+#include "arg_ivf.hpp"
+
+extern "C" {
+#include "commands/vacuum.h"
+}
+
+using namespace argpg::ivf;
+
+namespace {
+
+// Walks every list; with a callback, removes the entries it names. Counts what stays.
+void walk_lists(IndexVacuumInfo* info, IndexBulkDeleteResult* stats,
+                IndexBulkDeleteCallback callback, void* callback_state) {
+  Relation index = info->index;
+  const Cells cells = read_cells(index, false);
+  const BlockNumber blocks = RelationGetNumberOfBlocks(index);
+  stats->num_index_tuples = 0;
+  for (uint32 c = 0; c < cells.count; ++c) {
+    BlockNumber block = cells.refs[c].first, pages = 0;
+    while (block != InvalidBlockNumber) {
+      vacuum_delay_point();
+      if (block >= blocks || ++pages > blocks) corrupted(index, block, "list links out of range");
+      Buffer buf = ReadBufferExtended(index, MAIN_FORKNUM, block, RBM_NORMAL, info->strategy);
+      LockBuffer(buf, callback ? BUFFER_LOCK_EXCLUSIVE : BUFFER_LOCK_SHARE);
+      Page page = BufferGetPage(buf);
+      check_page(index, page, block, kListPage);
+      const OffsetNumber items = PageGetMaxOffsetNumber(page);
+      OffsetNumber dead[MaxOffsetNumber];
+      int n_dead = 0;
+      for (OffsetNumber item = FirstOffsetNumber; item <= items; ++item) {
+        ItemPointerData tid;
+        const char* sketch;
+        Size size;
+        read_entry(index, page, block, item, &tid, &sketch, &size);
+        if (callback && callback(&tid, callback_state))
+          dead[n_dead++] = item;
+        else
+          stats->num_index_tuples += 1;
+      }
+      if (n_dead > 0) {
+        GenericXLogState* state = GenericXLogStart(index);
+        Page changed = GenericXLogRegisterBuffer(state, buf, 0);
+        PageIndexMultiDelete(changed, dead, n_dead);
+        GenericXLogFinish(state);
+        stats->tuples_removed += n_dead;
+      }
+      block = reinterpret_cast<PageOpaque*>(PageGetSpecialPointer(page))->next;
+      UnlockReleaseBuffer(buf);
+    }
+  }
+  stats->num_pages = blocks;
+  pfree(cells.refs);
+}
+
+}  // namespace
+
+extern "C" {
+
+// Emptied pages stay in their lists (a later insert into the cell fills its last page only);
+// REINDEX compacts an index after large deletions.
+IndexBulkDeleteResult* arg_ivf_bulkdelete(IndexVacuumInfo* info, IndexBulkDeleteResult* stats,
+                                          IndexBulkDeleteCallback callback, void* state) {
+  if (!stats) stats = static_cast<IndexBulkDeleteResult*>(palloc0(sizeof(IndexBulkDeleteResult)));
+  walk_lists(info, stats, callback, state);
+  return stats;
+}
+
+IndexBulkDeleteResult* arg_ivf_vacuumcleanup(IndexVacuumInfo* info, IndexBulkDeleteResult* stats) {
+  if (info->analyze_only) return stats;
+  if (!stats) {  // no bulk delete ran: count the entries
+    stats = static_cast<IndexBulkDeleteResult*>(palloc0(sizeof(IndexBulkDeleteResult)));
+    walk_lists(info, stats, nullptr, nullptr);
+  }
+  return stats;
+}
+
+}  // extern "C"
