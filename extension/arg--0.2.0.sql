@@ -482,19 +482,28 @@ BEGIN
         ELSE format(' AND t.%I = %L', item.key, item.value #>> '{}') END;
     END LOOP;
   END IF;
-  -- A sketch column with an arg_ivf index gives the shortlist straight from the index, when no
-  -- filter would remove most of what the index returns and no descriptor is asked for.
+  -- A sketch column with an arg_ivf index (on the column itself, not partial) gives the
+  -- shortlist straight from the index, when no filter would remove most of what the index
+  -- returns and no descriptor is asked for. Should the probed cells hold fewer than k rows,
+  -- every other row is ranked too (a one-time test: not even scanned otherwise).
   IF sketch IS NOT NULL AND filter IS NULL AND descriptor IS NULL AND EXISTS (
        SELECT FROM pg_index i JOIN pg_class ic ON ic.oid = i.indexrelid
          JOIN pg_am am ON am.oid = ic.relam AND am.amname = 'arg_ivf'
          JOIN pg_attribute a ON a.attrelid = relid AND a.attname = sketch
-       WHERE i.indrelid = relid AND i.indisvalid AND i.indnatts = 1 AND i.indkey[0] = a.attnum) THEN
+       WHERE i.indrelid = relid AND i.indisvalid AND i.indnatts = 1 AND i.indkey[0] = a.attnum
+         AND i.indpred IS NULL AND i.indexprs IS NULL) THEN
     PERFORM set_config('enable_seqscan', 'off', true);
     RETURN QUERY EXECUTE format(
-      'SELECT c.r, (c.r).%1$I <~> $1 AS sim
-       FROM (SELECT ROW(s.*)::%2$s AS r FROM (SELECT t.* FROM %2$s t WHERE t.%1$I IS NOT NULL
-                                               ORDER BY t.%3$I <~> $2 LIMIT $3) s) c
-       ORDER BY sim, (c.r).%1$I LIMIT $4',
+      'WITH idx AS MATERIALIZED (
+         SELECT t.tableoid AS rel, t.ctid AS tid, ROW(t.*)::%2$s AS r FROM %2$s t
+         WHERE t.%1$I IS NOT NULL ORDER BY t.%3$I <~> $2 LIMIT $3),
+       cand AS (
+         SELECT idx.r FROM idx
+         UNION ALL
+         SELECT ROW(t.*)::%2$s FROM %2$s t
+         WHERE (SELECT count(*) FROM idx) < $4 AND t.%1$I IS NOT NULL
+           AND (t.tableoid, t.ctid) NOT IN (SELECT idx.rel, idx.tid FROM idx))
+       SELECT c.r, (c.r).%1$I <~> $1 AS sim FROM cand c ORDER BY sim, (c.r).%1$I LIMIT $4',
       col, relid::regclass, sketch)
     USING query, sq, greatest(coalesce(shortlist, greatest(20 * k, 200)), k), k;
     PERFORM set_config('enable_seqscan', seqscan, true);

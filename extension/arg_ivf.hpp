@@ -63,20 +63,23 @@ struct EntryHead {
   ItemPointerData tid;
 };
 
-// Where a cell is, its list, and its centre (when `has_centre`).
+// Where a cell is, its list, and its centre (when `has_centre`). List pages come after the
+// cell pages: a link below `first_list_page` is corrupt.
 struct CellRef {
   BlockNumber page;
   OffsetNumber item;
   bool has_centre;
   BlockNumber first, last;
+  BlockNumber first_list_page;
 };
 
-// An index's cells, read from its pages; centres are palloc'd plain data, cells[i]'s centre is
-// centres[i] (unset without a centre).
+// An index's cells, read from its pages: refs[i] and, when read with centres, centres[i]
+// (unset without a centre). The centres are kept decoded in the index's relcache entry
+// (rd_amcache) until the relation is rebuilt: never freed by the caller.
 struct Cells {
   uint32 count;
   CellRef* refs;
-  arg::ShapeSketch* centres;  // nullptr when read without centres
+  const arg::ShapeSketch* centres;  // nullptr when read without centres
 };
 
 // Reads and checks the metapage; raises XX002 (index corrupted) or, for another page version,
@@ -92,13 +95,21 @@ Cells read_cells(Relation index, bool with_centres);
 Buffer new_page(Relation index, ForkNumber fork, GenericXLogState* state, PageKind kind,
                 Page* page);
 
-// Checks that `page` (block `block`) is a page of `kind` of an arg_ivf index; raises XX002.
+// Checks that `page` (block `block`) is a page of `kind` of an arg_ivf index, its header sane
+// (sizes, lower <= upper <= special); raises XX002.
 void check_page(Relation index, Page page, BlockNumber block, PageKind kind);
 
-// Reads a cell item (its head and centre bytes) at `item` of a checked cell page of an index of
-// `blocks` blocks; raises XX002.
-CellHead read_cell_item(Relation index, BlockNumber blocks, Page page, BlockNumber block,
-                        OffsetNumber item, const char** centre, Size* centre_size);
+// Checks a list link read on block `at`: a list page (at or after `first_list_page`) within
+// the relation. `blocks` is the caller's count of blocks, read again when the link is beyond
+// it (another backend may have added the page since); raises XX002.
+void check_link(Relation index, BlockNumber* blocks, BlockNumber first_list_page, BlockNumber link,
+                BlockNumber at);
+
+// Reads a cell item (its head and centre bytes) at `item` of a checked cell page; its links
+// are checked as check_link does. Raises XX002.
+CellHead read_cell_item(Relation index, BlockNumber* blocks, BlockNumber first_list_page, Page page,
+                        BlockNumber block, OffsetNumber item, const char** centre,
+                        Size* centre_size);
 
 // An entry of a checked list page: its row and sketch bytes; raises XX002 when malformed.
 void read_entry(Relation index, Page page, BlockNumber block, OffsetNumber item,

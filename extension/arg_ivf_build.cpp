@@ -180,8 +180,10 @@ IndexBuildResult* arg_ivf_build(Relation heap, Relation index, IndexInfo* info) 
   s.capacity = std::max<Size>(1, std::min(by_memory, wanted));
   s.sample = static_cast<arg::ShapeSketch*>(
       MemoryContextAllocHuge(CurrentMemoryContext, sizeof(arg::ShapeSketch) * s.capacity));
-  pg_prng_seed(&s.random, 0x41524749);  // the same table gives the same index
-  table_index_build_scan(heap, index, info, true, true, sample_row, &s, nullptr);
+  // The same table gives the same index: a fixed seed, and scans that start at block 0 (no
+  // synchronised scans).
+  pg_prng_seed(&s.random, 0x41524749);
+  table_index_build_scan(heap, index, info, false, true, sample_row, &s, nullptr);
 
   // Centres: `lists`, or the square root of the rows, at most one a sampled row.
   Size cells = lists > 0 ? Size(lists) : Size(std::ceil(std::sqrt(s.rows)));
@@ -218,7 +220,7 @@ IndexBuildResult* arg_ivf_build(Relation heap, Relation index, IndexInfo* info) 
   f->batch_memory =
       AllocSetContextCreate(CurrentMemoryContext, "arg_ivf build batch", ALLOCSET_DEFAULT_SIZES);
   const double heap_rows =
-      table_index_build_scan(heap, index, info, true, true, file_row, f, nullptr);
+      table_index_build_scan(heap, index, info, false, true, file_row, f, nullptr);
   file_batch(*f);
 
   IndexBuildResult* result = static_cast<IndexBuildResult*>(palloc(sizeof(IndexBuildResult)));

@@ -50,7 +50,9 @@ uint32 cells_of(Oid index_oid) {
 // the lists' pages and entries, one sketch distance each (arg_sketch_distance's COST 20).
 void cost_estimate(PlannerInfo* root, IndexPath* path, double loop_count, Cost* startup,
                    Cost* total, Selectivity* selectivity, double* correlation, double* pages) {
-  if (path->indexorderbys == NIL) {  // nothing but ORDER BY <~> uses it
+  // Only ORDER BY <~> (one key) with a LIMIT uses it: without a LIMIT a query asks for every
+  // row in order, which an index that reads some cells cannot give.
+  if (list_length(path->indexorderbys) != 1 || root->parse->limitCount == nullptr) {
     *startup = *total = get_float8_infinity();
     *selectivity = 0;
     *correlation = 0;

@@ -44,12 +44,44 @@ void corrupted(Relation index, BlockNumber block, const char* what) {
 
 void check_page(Relation index, Page page, BlockNumber block, PageKind kind) {
   if (PageIsNew(page)) corrupted(index, block, "page never initialised");
+  const auto* header = reinterpret_cast<const PageHeaderData*>(page);
+  if (PageGetPageSize(page) != BLCKSZ || header->pd_lower < SizeOfPageHeaderData ||
+      header->pd_lower > header->pd_upper || header->pd_upper > header->pd_special ||
+      header->pd_special > BLCKSZ)
+    corrupted(index, block, "page header out of range");
   if (PageGetSpecialSize(page) != MAXALIGN(sizeof(PageOpaque)))
     corrupted(index, block, "page of another index type");
   const auto* opaque = reinterpret_cast<const PageOpaque*>(PageGetSpecialPointer(page));
   if (opaque->page_id != kPageId) corrupted(index, block, "page of another index type");
   if (opaque->kind != kind) corrupted(index, block, "page of the wrong kind");
 }
+
+void check_link(Relation index, BlockNumber* blocks, BlockNumber first_list_page, BlockNumber link,
+                BlockNumber at) {
+  if (link < first_list_page) corrupted(index, at, "list link to a page that is not a list's");
+  if (link >= *blocks) *blocks = RelationGetNumberOfBlocks(index);
+  if (link >= *blocks) corrupted(index, at, "list link beyond the end of the index");
+}
+
+namespace {
+
+// An item of a checked page: in range, in use, its bytes between the header's upper and
+// special offsets, of a length in [min_size, max_size].
+const char* item_bytes(Relation index, Page page, BlockNumber block, OffsetNumber item,
+                       Size min_size, Size max_size, Size* size, const char* what) {
+  if (item < FirstOffsetNumber || item > PageGetMaxOffsetNumber(page))
+    corrupted(index, block, psprintf("%s out of range", what));
+  ItemId id = PageGetItemId(page, item);
+  const auto* header = reinterpret_cast<const PageHeaderData*>(page);
+  const Size offset = ItemIdGetOffset(id), length = ItemIdGetLength(id);
+  if (!ItemIdIsNormal(id) || length < min_size || length > max_size || offset < header->pd_upper ||
+      offset + length > header->pd_special)
+    corrupted(index, block, psprintf("%s of a wrong size or place", what));
+  *size = length;
+  return static_cast<const char*>(PageGetItem(page, id));
+}
+
+}  // namespace
 
 Buffer new_page(Relation index, ForkNumber fork, GenericXLogState* state, PageKind kind,
                 Page* page) {
@@ -71,50 +103,73 @@ Buffer new_page(Relation index, ForkNumber fork, GenericXLogState* state, PageKi
   return buf;
 }
 
-CellHead read_cell_item(Relation index, BlockNumber blocks, Page page, BlockNumber block,
-                        OffsetNumber item, const char** centre, Size* centre_size) {
-  if (item < FirstOffsetNumber || item > PageGetMaxOffsetNumber(page))
-    corrupted(index, block, "cell item out of range");
-  ItemId id = PageGetItemId(page, item);
-  if (!ItemIdIsNormal(id) || ItemIdGetLength(id) < sizeof(CellHead) ||
-      ItemIdGetLength(id) > sizeof(CellHead) + kMaxSketchBytes)
-    corrupted(index, block, "cell item of a wrong size");
-  const char* data = static_cast<const char*>(PageGetItem(page, id));
+CellHead read_cell_item(Relation index, BlockNumber* blocks, BlockNumber first_list_page, Page page,
+                        BlockNumber block, OffsetNumber item, const char** centre,
+                        Size* centre_size) {
+  Size size;
+  const char* data = item_bytes(index, page, block, item, sizeof(CellHead),
+                                sizeof(CellHead) + kMaxSketchBytes, &size, "cell item");
   CellHead head;
   std::memcpy(&head, data, sizeof head);
   *centre = data + sizeof head;
-  *centre_size = ItemIdGetLength(id) - sizeof head;
-  const bool empty = head.first == InvalidBlockNumber;
-  if (empty != (head.last == InvalidBlockNumber) ||
-      (!empty &&
-       (head.first >= blocks || head.last >= blocks || head.first == 0 || head.last == 0)))
-    corrupted(index, block, "cell's list links out of range");
+  *centre_size = size - sizeof head;
+  if ((head.first == InvalidBlockNumber) != (head.last == InvalidBlockNumber))
+    corrupted(index, block, "cell's list half linked");
+  if (head.first != InvalidBlockNumber) {
+    check_link(index, blocks, first_list_page, head.first, block);
+    check_link(index, blocks, first_list_page, head.last, block);
+  }
   return head;
 }
 
 void read_entry(Relation index, Page page, BlockNumber block, OffsetNumber item,
                 ItemPointerData* tid, const char** sketch, Size* sketch_size) {
-  ItemId id = PageGetItemId(page, item);
-  if (!ItemIdIsNormal(id) || ItemIdGetLength(id) <= sizeof(EntryHead) ||
-      ItemIdGetLength(id) > sizeof(EntryHead) + kMaxSketchBytes)
-    corrupted(index, block, "entry of a wrong size");
-  const char* data = static_cast<const char*>(PageGetItem(page, id));
+  Size size;
+  const char* data = item_bytes(index, page, block, item, sizeof(EntryHead) + 1,
+                                sizeof(EntryHead) + kMaxSketchBytes, &size, "entry");
   std::memcpy(tid, data, sizeof(EntryHead));
   if (!ItemPointerIsValid(tid)) corrupted(index, block, "entry's row address invalid");
   *sketch = data + sizeof(EntryHead);
-  *sketch_size = ItemIdGetLength(id) - sizeof(EntryHead);
+  *sketch_size = size - sizeof(EntryHead);
 }
+
+namespace {
+
+// An index's decoded centres, kept in its relcache entry (rd_amcache, freed when the entry is
+// rebuilt) for the relation file they were read from.
+struct CentreCache {
+  Oid file;
+  uint32 cells, cell_pages;
+  arg::ShapeSketch centres[FLEXIBLE_ARRAY_MEMBER];
+};
+
+Oid file_of(Relation index) {
+#if PG_VERSION_NUM >= 160000
+  return index->rd_locator.relNumber;
+#else
+  return index->rd_node.relNode;
+#endif
+}
+
+}  // namespace
 
 Cells read_cells(Relation index, bool with_centres) {
   const Meta meta = read_meta(index);
   Cells cells;
   cells.count = meta.cells;
   cells.refs = static_cast<CellRef*>(palloc(sizeof(CellRef) * meta.cells));
-  cells.centres = with_centres ? static_cast<arg::ShapeSketch*>(MemoryContextAllocHuge(
-                                     CurrentMemoryContext, sizeof(arg::ShapeSketch) * meta.cells))
-                               : nullptr;
+  cells.centres = nullptr;
+  auto* cache = static_cast<CentreCache*>(index->rd_amcache);
+  const bool cached = cache && cache->file == file_of(index) && cache->cells == meta.cells &&
+                      cache->cell_pages == meta.cell_pages;
+  CentreCache* fill = nullptr;  // decoded here, kept once every centre has read
+  if (with_centres && !cached)
+    fill = static_cast<CentreCache*>(MemoryContextAllocHuge(
+        index->rd_indexcxt,
+        offsetof(CentreCache, centres) + sizeof(arg::ShapeSketch) * meta.cells));
+  BlockNumber blocks = RelationGetNumberOfBlocks(index);
+  const BlockNumber first_list_page = meta.cell_pages + 1;
   uint32 seen = 0;
-  const BlockNumber blocks = RelationGetNumberOfBlocks(index);
   for (BlockNumber block = 1; block <= meta.cell_pages; ++block) {
     Buffer buf = ReadBuffer(index, block);
     LockBuffer(buf, BUFFER_LOCK_SHARE);
@@ -125,15 +180,15 @@ Cells read_cells(Relation index, bool with_centres) {
     for (OffsetNumber item = FirstOffsetNumber; item <= items; ++item) {
       const char* centre;
       Size size;
-      const CellHead head = read_cell_item(index, blocks, page, block, item, &centre, &size);
-      CellRef& ref = cells.refs[seen];
-      ref = {block, item, size > 0, head.first, head.last};
+      const CellHead head =
+          read_cell_item(index, &blocks, first_list_page, page, block, item, &centre, &size);
+      cells.refs[seen] = {block, item, size > 0, head.first, head.last, first_list_page};
       if (size == 0 && meta.cells != 1) corrupted(index, block, "cell without a centre");
-      if (with_centres && size > 0) {
+      if (fill && size > 0) {
         Outcome out = guarded(
-            [&] { arg::read_shape_sketch(std::string_view(centre, size), cells.centres[seen]); });
+            [&] { arg::read_shape_sketch(std::string_view(centre, size), fill->centres[seen]); });
         if (out.failure != Failure::None) {
-          UnlockReleaseBuffer(buf);
+          pfree(fill);
           corrupted(index, block, psprintf("cell centre unreadable (%s)", out.message));
         }
       }
@@ -141,7 +196,19 @@ Cells read_cells(Relation index, bool with_centres) {
     }
     UnlockReleaseBuffer(buf);
   }
-  if (seen != meta.cells) corrupted(index, meta.cell_pages, "fewer cells than the metapage says");
+  if (seen != meta.cells) {
+    if (fill) pfree(fill);
+    corrupted(index, meta.cell_pages, "fewer cells than the metapage says");
+  }
+  if (fill) {
+    fill->file = file_of(index);
+    fill->cells = meta.cells;
+    fill->cell_pages = meta.cell_pages;
+    if (index->rd_amcache) pfree(index->rd_amcache);
+    index->rd_amcache = fill;
+    cache = fill;
+  }
+  if (with_centres) cells.centres = cache->centres;
   return cells;
 }
 
@@ -163,7 +230,8 @@ void append_entry(Relation index, const CellRef& cell, ItemPointer tid, const ch
   check_page(index, cell_page, cell.page, kCellPage);
   const char* centre;
   Size centre_size;
-  CellHead head = read_cell_item(index, RelationGetNumberOfBlocks(index), cell_page, cell.page,
+  BlockNumber blocks = RelationGetNumberOfBlocks(index);
+  CellHead head = read_cell_item(index, &blocks, cell.first_list_page, cell_page, cell.page,
                                  cell.item, &centre, &centre_size);
 
   Buffer last_buf = InvalidBuffer;

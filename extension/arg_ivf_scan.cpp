@@ -46,12 +46,13 @@ void grow(ScanState& s, Size more) {
 // unordered). Pages are read one at a time under a share lock.
 void read_list(IndexScanDesc scan, ScanState& s, const CellRef& cell) {
   Relation index = scan->indexRelation;
-  const BlockNumber blocks = RelationGetNumberOfBlocks(index);
-  BlockNumber block = cell.first;
+  BlockNumber blocks = RelationGetNumberOfBlocks(index);
+  BlockNumber block = cell.first, at = cell.page;
   BlockNumber pages = 0;
   while (block != InvalidBlockNumber) {
     CHECK_FOR_INTERRUPTS();
-    if (block >= blocks || ++pages > blocks) corrupted(index, block, "list links out of range");
+    check_link(index, &blocks, cell.first_list_page, block, at);
+    if (++pages > blocks) corrupted(index, block, "list links in a loop");
     Buffer buf = ReadBuffer(index, block);
     LockBuffer(buf, BUFFER_LOCK_SHARE);
     Page page = BufferGetPage(buf);
@@ -77,6 +78,7 @@ void read_list(IndexScanDesc scan, ScanState& s, const CellRef& cell) {
         corrupted(index, block, psprintf("entry's sketch unreadable (%s)", out.message));
     }
     s.count += items;
+    at = block;
     block = reinterpret_cast<PageOpaque*>(PageGetSpecialPointer(page))->next;
     UnlockReleaseBuffer(buf);
   }
@@ -125,7 +127,6 @@ void rank(IndexScanDesc scan, ScanState& s) {
     });
   pfree(probed);
   pfree(cells.refs);
-  if (cells.centres) pfree(cells.centres);
   MemoryContextSwitchTo(caller);
   s.ranked = true;
 }

@@ -16,13 +16,14 @@ void walk_lists(IndexVacuumInfo* info, IndexBulkDeleteResult* stats,
                 IndexBulkDeleteCallback callback, void* callback_state) {
   Relation index = info->index;
   const Cells cells = read_cells(index, false);
-  const BlockNumber blocks = RelationGetNumberOfBlocks(index);
+  BlockNumber blocks = RelationGetNumberOfBlocks(index);
   stats->num_index_tuples = 0;
   for (uint32 c = 0; c < cells.count; ++c) {
-    BlockNumber block = cells.refs[c].first, pages = 0;
+    BlockNumber block = cells.refs[c].first, at = cells.refs[c].page, pages = 0;
     while (block != InvalidBlockNumber) {
       vacuum_delay_point();
-      if (block >= blocks || ++pages > blocks) corrupted(index, block, "list links out of range");
+      check_link(index, &blocks, cells.refs[c].first_list_page, block, at);
+      if (++pages > blocks) corrupted(index, block, "list links in a loop");
       Buffer buf = ReadBufferExtended(index, MAIN_FORKNUM, block, RBM_NORMAL, info->strategy);
       LockBuffer(buf, callback ? BUFFER_LOCK_EXCLUSIVE : BUFFER_LOCK_SHARE);
       Page page = BufferGetPage(buf);
@@ -47,11 +48,12 @@ void walk_lists(IndexVacuumInfo* info, IndexBulkDeleteResult* stats,
         GenericXLogFinish(state);
         stats->tuples_removed += n_dead;
       }
+      at = block;
       block = reinterpret_cast<PageOpaque*>(PageGetSpecialPointer(page))->next;
       UnlockReleaseBuffer(buf);
     }
   }
-  stats->num_pages = blocks;
+  stats->num_pages = RelationGetNumberOfBlocks(index);
   pfree(cells.refs);
 }
 

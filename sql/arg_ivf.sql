@@ -31,6 +31,15 @@ SET enable_seqscan = off;
 SET plan_cache_mode = force_generic_plan;  -- plans for any query sketch, as from a client
 PREPARE nearest(arg_sketch, int) AS SELECT id FROM shapes ORDER BY sk <~> $1 LIMIT $2;
 EXPLAIN (COSTS OFF) EXECUTE nearest(NULL, 5);
+-- Without a LIMIT a query asks for every row in order, which reading some cells cannot give:
+-- the index is not used, nor for two distances at once.
+PREPARE every_row(arg_sketch) AS SELECT id FROM shapes ORDER BY sk <~> $1;
+EXPLAIN (COSTS OFF) EXECUTE every_row(NULL);
+PREPARE two_keys(arg_sketch, arg_sketch) AS
+  SELECT id FROM shapes ORDER BY sk <~> $1, sk <~> $2 LIMIT 5;
+EXPLAIN (COSTS OFF) EXECUTE two_keys(NULL, NULL);
+DEALLOCATE every_row;
+DEALLOCATE two_keys;
 
 -- Every probe: every row, nearest first, the same order and distances as sorting them all
 -- (ties, if any, by row address, which is id order here); the NULL sketch is not indexed.
@@ -77,9 +86,9 @@ FROM (SELECT id FROM (SELECT id, descr FROM shapes ORDER BY sk <~> arg_sketch(:'
       ORDER BY descr <~> :'qa', id LIMIT 5) s;
 
 -- arg_knn takes its shortlist from the index when the sketch column has one and neither a
--- filter nor a descriptor column is given: the same rows as the query above; with one probe,
--- only the rows of the query's cell, as the index returns them. With a filter the candidates
--- come from the descriptor: every vase.
+-- filter nor a descriptor column is given: the same rows as the query above. With one probe
+-- and more rows asked for than the query's cell holds, every other row is ranked too: still k
+-- rows. With a filter the candidates come from the descriptor: every vase.
 SELECT array_agg((k.obj).id ORDER BY k.sim, (k.obj).id)
          = (SELECT array_agg(id) FROM (
               SELECT id FROM (SELECT id, descr FROM shapes
@@ -87,10 +96,13 @@ SELECT array_agg((k.obj).id ORDER BY k.sim, (k.obj).id)
               ORDER BY descr <~> :'qa', id LIMIT 5) s) AS knn_same_as_index_query
 FROM arg_knn(NULL::shapes, 'descr', :'qa', 5, sketch => 'sk', shortlist => 20) AS k;
 SET arg.ivf_probes = 1;
-SELECT count(*) < 45 AS knn_reads_one_cell,
-       count(*) = (SELECT count(*) FROM (SELECT id FROM shapes
-                                         ORDER BY sk <~> arg_sketch(:'qa'::arg) LIMIT 45) s)
-         AS as_many_as_the_index_returns
+SELECT (SELECT count(*) FROM (SELECT id FROM shapes
+                              ORDER BY sk <~> arg_sketch(:'qa'::arg) LIMIT 45) s) < 45
+         AS the_index_reads_one_cell,
+       count(*) AS knn_rows,
+       array_agg((k.obj).id ORDER BY k.sim, (k.obj).id)
+         = (SELECT array_agg(id ORDER BY descr <~> :'qa', id) FROM shapes WHERE descr IS NOT NULL)
+         AS ranked_as_brute_force
 FROM arg_knn(NULL::shapes, 'descr', :'qa', 45, sketch => 'sk', shortlist => 45) AS k;
 SELECT count(*) AS vases, array_agg(DISTINCT (k.obj).class) AS classes
 FROM arg_knn(NULL::shapes, 'descr', :'qa', 45, filter => '{"class": "vase"}', sketch => 'sk',
@@ -124,6 +136,19 @@ SELECT array_agg(id) = (SELECT array_agg(id ORDER BY arg_sketch_distance(sk, :'q
 FROM (SELECT id FROM shapes ORDER BY sk <~> :'q' LIMIT 100) s;
 REINDEX INDEX shapes_sk;
 SELECT count(*) AS rows_after_reindex FROM (SELECT id FROM shapes ORDER BY sk <~> :'q' LIMIT 100) s;
+-- Rebuilt with other cells in the same session (whose backend kept the old centres): searched
+-- by the new ones.
+ALTER INDEX shapes_sk SET (lists = 3);
+REINDEX INDEX shapes_sk;
+SET arg.ivf_probes = 1;
+SELECT bool_and(first = q.id) AS finds_itself_first_in_three_cells
+FROM shapes q,
+     LATERAL (SELECT id AS first FROM shapes ORDER BY sk <~> q.sk LIMIT 1) i
+WHERE q.sk IS NOT NULL;
+SET arg.ivf_probes = 3;
+SELECT array_agg(id) = (SELECT array_agg(id ORDER BY arg_sketch_distance(sk, :'q'), id)
+                        FROM shapes WHERE sk IS NOT NULL) AS exact_with_every_probe
+FROM (SELECT id FROM shapes ORDER BY sk <~> :'q' LIMIT 100) s;
 
 -- An index built on an empty table has one cell, which every row joins (REINDEX once the table
 -- is loaded); an unlogged table's index too. More lists than rows: a cell a row.

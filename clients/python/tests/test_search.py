@@ -134,10 +134,10 @@ def test_a_sketch_column_serves_a_third_stage(conn: psycopg.Connection[Any], cat
         conn.execute("SET arg.ivf_probes = 4")
         indexed = pgarg.nearest(conn, "search_sketched", query, k=5, sketch="sk", shortlist=50)
         assert indexed == brute
-        conn.execute("SET arg.ivf_probes = 1")  # one cell: only the query's own cell's rows
-        one_cell = pgarg.nearest(conn, "search_sketched", query, k=50, sketch="sk", shortlist=50)
-        assert 0 < len(one_cell) < len(pgarg.nearest(conn, catalogue, query, k=50))
-        assert one_cell[0] == brute[0]
+        # One cell holds fewer rows than asked for: the server ranks every other row too.
+        conn.execute("SET arg.ivf_probes = 1")
+        every = pgarg.nearest(conn, "search_sketched", query, k=50, sketch="sk", shortlist=50)
+        assert every == pgarg.nearest(conn, catalogue, query, k=50)
     finally:
         conn.execute("RESET arg.ivf_probes")
         conn.execute("DROP TABLE search_sketched")
