@@ -153,20 +153,10 @@ Oid file_of(Relation index) {
 
 }  // namespace
 
-Cells read_cells(Relation index, bool with_centres) {
-  const Meta meta = read_meta(index);
-  Cells cells;
-  cells.count = meta.cells;
-  cells.refs = static_cast<CellRef*>(palloc(sizeof(CellRef) * meta.cells));
-  cells.centres = nullptr;
-  auto* cache = static_cast<CentreCache*>(index->rd_amcache);
-  const bool cached = cache && cache->file == file_of(index) && cache->cells == meta.cells &&
-                      cache->cell_pages == meta.cell_pages;
-  CentreCache* fill = nullptr;  // decoded here, kept once every centre has read
-  if (with_centres && !cached)
-    fill = static_cast<CentreCache*>(MemoryContextAllocHuge(
-        index->rd_indexcxt,
-        offsetof(CentreCache, centres) + sizeof(arg::ShapeSketch) * meta.cells));
+namespace {
+
+// Reads every cell page into `refs` and, when `centres` is given, decodes the centres into it.
+void read_cell_pages(Relation index, const Meta& meta, CellRef* refs, arg::ShapeSketch* centres) {
   BlockNumber blocks = RelationGetNumberOfBlocks(index);
   const BlockNumber first_list_page = meta.cell_pages + 1;
   uint32 seen = 0;
@@ -182,33 +172,57 @@ Cells read_cells(Relation index, bool with_centres) {
       Size size;
       const CellHead head =
           read_cell_item(index, &blocks, first_list_page, page, block, item, &centre, &size);
-      cells.refs[seen] = {block, item, size > 0, head.first, head.last, first_list_page};
+      refs[seen] = {block, item, size > 0, head.first, head.last, first_list_page};
       if (size == 0 && meta.cells != 1) corrupted(index, block, "cell without a centre");
-      if (fill && size > 0) {
-        Outcome out = guarded(
-            [&] { arg::read_shape_sketch(std::string_view(centre, size), fill->centres[seen]); });
-        if (out.failure != Failure::None) {
-          pfree(fill);
+      if (centres && size > 0) {
+        Outcome out =
+            guarded([&] { arg::read_shape_sketch(std::string_view(centre, size), centres[seen]); });
+        if (out.failure != Failure::None)
           corrupted(index, block, psprintf("cell centre unreadable (%s)", out.message));
-        }
       }
       ++seen;
     }
     UnlockReleaseBuffer(buf);
   }
-  if (seen != meta.cells) {
+  if (seen != meta.cells) corrupted(index, meta.cell_pages, "fewer cells than the metapage says");
+}
+
+}  // namespace
+
+Cells read_cells(Relation index, bool with_centres) {
+  const Meta meta = read_meta(index);
+  Cells cells;
+  cells.count = meta.cells;
+  cells.refs = static_cast<CellRef*>(palloc(sizeof(CellRef) * meta.cells));
+  auto* const cache = static_cast<CentreCache*>(index->rd_amcache);
+  const bool cached = cache && cache->file == file_of(index) && cache->cells == meta.cells &&
+                      cache->cell_pages == meta.cell_pages;
+  // Decoded straight into the relcache entry's memory, freed again should a page fail its
+  // checks (a corrupt index read again and again would otherwise grow the entry each time).
+  CentreCache* const fill =
+      with_centres && !cached ? static_cast<CentreCache*>(MemoryContextAllocHuge(
+                                    index->rd_indexcxt, offsetof(CentreCache, centres) +
+                                                            sizeof(arg::ShapeSketch) * meta.cells))
+                              : nullptr;
+  PG_TRY();
+  { read_cell_pages(index, meta, cells.refs, fill ? fill->centres : nullptr); }
+  PG_CATCH();
+  {
     if (fill) pfree(fill);
-    corrupted(index, meta.cell_pages, "fewer cells than the metapage says");
+    PG_RE_THROW();
   }
+  PG_END_TRY();
+  cells.centres = nullptr;
   if (fill) {
     fill->file = file_of(index);
     fill->cells = meta.cells;
     fill->cell_pages = meta.cell_pages;
     if (index->rd_amcache) pfree(index->rd_amcache);
     index->rd_amcache = fill;
-    cache = fill;
+    cells.centres = fill->centres;
+  } else if (with_centres) {
+    cells.centres = cache->centres;
   }
-  if (with_centres) cells.centres = cache->centres;
   return cells;
 }
 

@@ -1,6 +1,7 @@
 // Searching an arg_ivf index: the query's nearest cells, their lists ranked by
 // arg_sketch_distance, rows returned nearest first.
 #include <algorithm>
+#include <cmath>
 
 #include "graph/sketch_cells.hpp"
 
@@ -71,7 +72,10 @@ void read_list(IndexScanDesc scan, ScanState& s, const CellRef& cell) {
       argpg::Outcome out = argpg::guarded([&] {
         for (OffsetNumber item = 0; item < items; ++item) {
           arg::read_shape_sketch(std::string_view(sketch[item], size[item]), *s.row);
-          s.hits[s.count + item].distance = arg::sketch_distance(*s.query, *s.row);
+          const double d = arg::sketch_distance(*s.query, *s.row);
+          // Checked sketches give finite distances; a NaN would break the sort's order.
+          if (std::isnan(d)) throw arg::InputError("its distance is not a number");
+          s.hits[s.count + item].distance = d;
         }
       });
       if (out.failure != argpg::Failure::None)
