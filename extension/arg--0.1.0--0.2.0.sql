@@ -212,8 +212,15 @@ BEGIN
   -- A sketch column with an arg_ivf index (on the column itself, not partial) gives the
   -- shortlist straight from the index, when no filter would remove most of what the index
   -- returns and no descriptor is asked for. Should the probed cells hold fewer than k rows,
-  -- every other row is ranked too (a one-time test: not even scanned otherwise).
-  IF sketch IS NOT NULL AND filter IS NULL AND descriptor IS NULL AND EXISTS (
+  -- every other row is ranked too (a one-time test: not even scanned otherwise), told apart
+  -- by row address: so only for a table without inheritance children, or a partitioned one
+  -- whose partitions are all tables (a foreign partition's rows have no address).
+  IF sketch IS NOT NULL AND filter IS NULL AND descriptor IS NULL
+     AND ((kind IN ('r', 'm') AND NOT children)
+          OR (kind = 'p' AND NOT EXISTS (
+                SELECT FROM pg_partition_tree(relid) p JOIN pg_class c ON c.oid = p.relid
+                WHERE p.isleaf AND c.relkind NOT IN ('r', 'm'))))
+     AND EXISTS (
        SELECT FROM pg_index i JOIN pg_class ic ON ic.oid = i.indexrelid
          JOIN pg_am am ON am.oid = ic.relam AND am.amname = 'arg_ivf'
          JOIN pg_attribute a ON a.attrelid = relid AND a.attname = sketch

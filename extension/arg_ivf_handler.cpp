@@ -46,13 +46,26 @@ uint32 cells_of(Oid index_oid) {
   return meta.cells;
 }
 
+// Whether this query level's result is cut by a LIMIT: a constant one the planner took as a
+// hard limit (not LIMIT ALL or NULL; none under grouping, aggregates, window functions,
+// DISTINCT or set-returning functions, which read every row first), or one computed at run
+// time (a generic plan of LIMIT $1, often cast to bigint) under the same conditions.
+bool row_limited(PlannerInfo* root) {
+  if (root->limit_tuples > 0) return true;
+  const Query* q = root->parse;
+  return q->limitCount != nullptr && !IsA(q->limitCount, Const) && q->groupClause == NIL &&
+         q->groupingSets == NIL && q->distinctClause == NIL && !q->hasAggs && !q->hasWindowFuncs &&
+         !q->hasTargetSRFs && !root->hasHavingQual;
+}
+
 // All of a search's work comes before its first row: the centres, then the probed share of
 // the lists' pages and entries, one sketch distance each (arg_sketch_distance's COST 20).
 void cost_estimate(PlannerInfo* root, IndexPath* path, double loop_count, Cost* startup,
                    Cost* total, Selectivity* selectivity, double* correlation, double* pages) {
-  // Only ORDER BY <~> (one key) with a LIMIT uses it: without a LIMIT a query asks for every
-  // row in order, which an index that reads some cells cannot give.
-  if (list_length(path->indexorderbys) != 1 || root->parse->limitCount == nullptr) {
+  // Only ORDER BY <~> (one key) under a LIMIT that bounds the rows this level returns uses
+  // it: without one a query asks for every row in order, which an index that reads some cells
+  // cannot give.
+  if (list_length(path->indexorderbys) != 1 || !row_limited(root)) {
     *startup = *total = get_float8_infinity();
     *selectivity = 0;
     *correlation = 0;

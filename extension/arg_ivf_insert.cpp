@@ -19,6 +19,8 @@ bool arg_ivf_insert(Relation index, Datum* values, bool* isnull, ItemPointer hea
   MemoryContext caller = MemoryContextSwitchTo(memory);
   auto* sketch = static_cast<arg::ShapeSketch*>(palloc(sizeof(arg::ShapeSketch)));
   read_value(values[0], *sketch);
+  // cells.centres lives in the relcache entry: nothing that may accept invalidation messages
+  // (a lock, a detoast) may run before its last use, nearest_cell.
   const Cells cells = read_cells(index, true);
   std::size_t cell = 0;
   if (cells.refs[0].has_centre) {

@@ -106,6 +106,8 @@ void rank(IndexScanDesc scan, ScanState& s) {
   s.unordered = (key->sk_flags & SK_ISNULL) != 0;
   s.count = s.next = 0;
   if (!s.unordered) read_value(key->sk_argument, *s.query);
+  // cells.centres lives in the relcache entry: nothing that may accept invalidation messages
+  // (a lock, a detoast) may run before its last use below.
   const Cells cells = read_cells(index, !s.unordered);
   // A NULL query has no nearest: every row, in no order (all its distances are NULL).
   uint32 probes = s.unordered ? cells.count : uint32(argpg::ivf_probes());

@@ -38,8 +38,17 @@ EXPLAIN (COSTS OFF) EXECUTE every_row(NULL);
 PREPARE two_keys(arg_sketch, arg_sketch) AS
   SELECT id FROM shapes ORDER BY sk <~> $1, sk <~> $2 LIMIT 5;
 EXPLAIN (COSTS OFF) EXECUTE two_keys(NULL, NULL);
+-- LIMIT ALL asks for every row too; a window over every row (count(*) OVER ()) reads them all
+-- before the LIMIT.
+PREPARE limit_all(arg_sketch) AS SELECT id FROM shapes ORDER BY sk <~> $1 LIMIT ALL;
+EXPLAIN (COSTS OFF) EXECUTE limit_all(NULL);
+PREPARE with_total(arg_sketch, int) AS
+  SELECT id, count(*) OVER () AS total FROM shapes ORDER BY sk <~> $1 LIMIT $2;
+EXPLAIN (COSTS OFF) EXECUTE with_total(NULL, 5);
 DEALLOCATE every_row;
 DEALLOCATE two_keys;
+DEALLOCATE limit_all;
+DEALLOCATE with_total;
 
 -- Every probe: every row, nearest first, the same order and distances as sorting them all
 -- (ties, if any, by row address, which is id order here); the NULL sketch is not indexed.
@@ -107,6 +116,20 @@ FROM arg_knn(NULL::shapes, 'descr', :'qa', 45, sketch => 'sk', shortlist => 45) 
 SELECT count(*) AS vases, array_agg(DISTINCT (k.obj).class) AS classes
 FROM arg_knn(NULL::shapes, 'descr', :'qa', 45, filter => '{"class": "vase"}', sketch => 'sk',
              shortlist => 45) AS k;
+-- A partitioned table with the index on it: arg_knn through the partitions' indexes (every
+-- cell probed, every row on the shortlist: brute force's answer).
+CREATE TABLE parts (id int, class text, descr arg, sk arg_sketch) PARTITION BY LIST (class);
+CREATE TABLE parts_round PARTITION OF parts FOR VALUES IN ('vase', 'cup', 'amphora', 'torus');
+CREATE TABLE parts_other PARTITION OF parts DEFAULT;
+INSERT INTO parts SELECT id, class, descr, sk FROM shapes;
+CREATE INDEX parts_sk ON parts USING arg_ivf (sk) WITH (lists = 2);
+SET arg.ivf_probes = 2;
+SELECT array_agg((k.obj).id ORDER BY k.sim, (k.obj).id)
+         = (SELECT array_agg(id) FROM (SELECT id FROM shapes WHERE descr IS NOT NULL
+                                       ORDER BY descr <~> :'qa', id LIMIT 5) b)
+         AS partitioned_as_brute_force
+FROM arg_knn(NULL::parts, 'descr', :'qa', 5, sketch => 'sk', shortlist => 45) AS k;
+DROP TABLE parts;
 SET arg.ivf_probes = 3;
 
 -- A NULL query has no nearest: the index returns every row it holds (not the one with a NULL
