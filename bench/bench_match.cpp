@@ -1,9 +1,11 @@
 // Google Benchmark of comparing two ARGs (10k-triangle models) of the same and other classes,
-// with and without the per-graph preparation, and of reading a stored value as a ranking does.
+// with and without the per-graph preparation, of reading a stored value as a ranking does, and
+// of what an arg_ivf index does per entry and per filed row.
 #include <benchmark/benchmark.h>
 
 #include "bench_models.hpp"
 #include "graph/serialize.hpp"
+#include "graph/sketch_cells.hpp"
 #include "match/match_prep.hpp"
 #include "match/similarity.hpp"
 #include "pipeline/build_arg.hpp"
@@ -80,8 +82,40 @@ void BM_ReadStoredValue(benchmark::State& state) {
   state.counters["bytes"] = double(a.size() + b.size()) / 2;
 }
 
+// An arg_ivf search's work per entry: the entry's sketch bytes read strictly, then its
+// distance to the query's sketch.
+void BM_SketchEntry(benchmark::State& state) {
+  const ShapeSketch query = shape_sketch(graph("human", 0));
+  const std::string a = write_shape_sketch(shape_sketch(graph("human", 2))),
+                    b = write_shape_sketch(shape_sketch(graph("cup", 1)));
+  ShapeSketch row;
+  bool flip = false;
+  for (auto _ : state) {
+    read_shape_sketch((flip = !flip) ? a : b, row);
+    benchmark::DoNotOptimize(sketch_distance(query, row));
+  }
+}
+
+// Filing a row among 317 centres (the default cells of 100,000 rows), as the build and an
+// insert do.
+void BM_NearestCell(benchmark::State& state) {
+  std::vector<ShapeSketch> centres;
+  for (int k = 0; k < 317; ++k)
+    centres.push_back(shape_sketch(graph(k % 2 ? "cup" : "human", k % 4)));
+  const ShapeSketch row = shape_sketch(graph("octopus", 0));
+  for (auto _ : state) benchmark::DoNotOptimize(nearest_cell(row, centres.data(), centres.size()));
+}
+
 }  // namespace
 
+BENCHMARK(BM_SketchEntry)
+    ->Unit(benchmark::kMicrosecond)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_NearestCell)
+    ->Unit(benchmark::kMicrosecond)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly(true);
 BENCHMARK(BM_SimSameClass)
     ->Unit(benchmark::kMicrosecond)
     ->Repetitions(5)
