@@ -95,6 +95,9 @@ Cells read_cells(Relation index, bool with_centres);
 Buffer new_page(Relation index, ForkNumber fork, GenericXLogState* state, PageKind kind,
                 Page* page);
 
+// Raises XX002 "index "name" is corrupted: <what> at block B".
+[[noreturn]] void corrupted(Relation index, BlockNumber block, const char* what);
+
 // Checks that `page` (block `block`) is a page of `kind` of an arg_ivf index, its header sane
 // (sizes, lower <= upper <= special); raises XX002.
 void check_page(Relation index, Page page, BlockNumber block, PageKind kind);
@@ -115,6 +118,29 @@ CellHead read_cell_item(Relation index, BlockNumber* blocks, BlockNumber first_l
 void read_entry(Relation index, Page page, BlockNumber block, OffsetNumber item,
                 ItemPointerData* tid, const char** sketch, Size* sketch_size);
 
+// Walks the pages of `cell`'s list in order, each locked in `lock_mode` and checked as a list
+// page, calling `pace()` before each (interrupts, vacuum delay) and `visit(buffer, page,
+// block)` on it. `blocks` is the caller's block count (check_link). Raises XX002 on a bad link
+// or a loop.
+template <class Visit>
+void walk_list(Relation index, const CellRef& cell, int lock_mode, BufferAccessStrategy strategy,
+               BlockNumber* blocks, void (*pace)(), Visit&& visit) {
+  BlockNumber block = cell.first, at = cell.page, pages = 0;
+  while (block != InvalidBlockNumber) {
+    pace();
+    check_link(index, blocks, cell.first_list_page, block, at);
+    if (++pages > *blocks) corrupted(index, block, "list links in a loop");
+    Buffer buf = ReadBufferExtended(index, MAIN_FORKNUM, block, RBM_NORMAL, strategy);
+    LockBuffer(buf, lock_mode);
+    Page page = BufferGetPage(buf);
+    check_page(index, page, block, kListPage);
+    visit(buf, page, block);
+    at = block;
+    block = reinterpret_cast<PageOpaque*>(PageGetSpecialPointer(page))->next;
+    UnlockReleaseBuffer(buf);
+  }
+}
+
 // Appends an entry for (`tid`, `sketch`) to the list of `cell`, extending it by a page when
 // its last page is full; WAL-logged.
 void append_entry(Relation index, const CellRef& cell, ItemPointer tid, const char* sketch,
@@ -122,9 +148,6 @@ void append_entry(Relation index, const CellRef& cell, ItemPointer tid, const ch
 
 // Reads the sketch bytes of an indexed value into `out`; raises XX001 when it is not one.
 void read_value(Datum value, arg::ShapeSketch& out);
-
-// Raises XX002 "index "name" is corrupted: <what> at block B".
-[[noreturn]] void corrupted(Relation index, BlockNumber block, const char* what);
 
 }  // namespace argpg::ivf
 

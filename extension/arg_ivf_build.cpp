@@ -88,12 +88,9 @@ void file_batch(Filing& f) {
 void file_row(Relation, ItemPointer tid, Datum* values, bool* isnull, bool, void* state) {
   auto* f = static_cast<Filing*>(state);
   if (isnull[0]) return;
+  // A copy in the batch's memory: the build scan's datum lives only for this call.
   MemoryContext old = MemoryContextSwitchTo(f->batch_memory);
-  varlena* v = PG_DETOAST_DATUM_PACKED(values[0]);
-  if (v == reinterpret_cast<varlena*>(DatumGetPointer(values[0]))) {
-    v = static_cast<varlena*>(palloc(VARSIZE_ANY(v)));
-    std::memcpy(v, DatumGetPointer(values[0]), VARSIZE_ANY(DatumGetPointer(values[0])));
-  }
+  varlena* v = PG_DETOAST_DATUM_COPY(values[0]);
   MemoryContextSwitchTo(old);
   Outcome out = guarded([&] { arg::read_shape_sketch(view(v), f->sketches[f->count]); });
   raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot read arg_sketch");

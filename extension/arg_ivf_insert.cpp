@@ -17,8 +17,10 @@ bool arg_ivf_insert(Relation index, Datum* values, bool* isnull, ItemPointer hea
   MemoryContext memory =
       AllocSetContextCreate(CurrentMemoryContext, "arg_ivf insert", ALLOCSET_DEFAULT_SIZES);
   MemoryContext caller = MemoryContextSwitchTo(memory);
+  // Detoasted once: read here, stored below.
+  varlena* v = PG_DETOAST_DATUM_PACKED(values[0]);
   auto* sketch = static_cast<arg::ShapeSketch*>(palloc(sizeof(arg::ShapeSketch)));
-  read_value(values[0], *sketch);
+  read_value(PointerGetDatum(v), *sketch);
   // cells.centres lives in the relcache entry: nothing that may accept invalidation messages
   // (a lock, a detoast) may run before its last use, nearest_cell.
   const Cells cells = read_cells(index, true);
@@ -28,7 +30,6 @@ bool arg_ivf_insert(Relation index, Datum* values, bool* isnull, ItemPointer hea
         argpg::guarded([&] { cell = arg::nearest_cell(*sketch, cells.centres, cells.count); });
     argpg::raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot compare arg_sketch values");
   }
-  varlena* v = PG_DETOAST_DATUM_PACKED(values[0]);
   append_entry(index, cells.refs[cell], heap_tid, VARDATA_ANY(v), VARSIZE_ANY_EXHDR(v));
   MemoryContextSwitchTo(caller);
   MemoryContextDelete(memory);

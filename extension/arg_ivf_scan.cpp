@@ -43,49 +43,41 @@ void grow(ScanState& s, Size more) {
   s.capacity = capacity;
 }
 
+void check_interrupts() {
+  CHECK_FOR_INTERRUPTS();
+}
+
 // Reads one cell's list into the hits: every entry's distance to the query (none when
 // unordered). Pages are read one at a time under a share lock.
-void read_list(IndexScanDesc scan, ScanState& s, const CellRef& cell) {
+void read_list(IndexScanDesc scan, ScanState& s, const CellRef& cell, BlockNumber* blocks) {
   Relation index = scan->indexRelation;
-  BlockNumber blocks = RelationGetNumberOfBlocks(index);
-  BlockNumber block = cell.first, at = cell.page;
-  BlockNumber pages = 0;
-  while (block != InvalidBlockNumber) {
-    CHECK_FOR_INTERRUPTS();
-    check_link(index, &blocks, cell.first_list_page, block, at);
-    if (++pages > blocks) corrupted(index, block, "list links in a loop");
-    Buffer buf = ReadBuffer(index, block);
-    LockBuffer(buf, BUFFER_LOCK_SHARE);
-    Page page = BufferGetPage(buf);
-    check_page(index, page, block, kListPage);
-    const OffsetNumber items = PageGetMaxOffsetNumber(page);
-    grow(s, items);
-    // Entries are checked outside the guarded loop (ereport may not run inside it).
-    const char* sketch[MaxOffsetNumber];
-    Size size[MaxOffsetNumber];
-    for (OffsetNumber item = FirstOffsetNumber; item <= items; ++item) {
-      Hit& hit = s.hits[s.count + item - 1];
-      read_entry(index, page, block, item, &hit.tid, &sketch[item - 1], &size[item - 1]);
-      hit.distance = 0;
-    }
-    if (!s.unordered) {
-      argpg::Outcome out = argpg::guarded([&] {
-        for (OffsetNumber item = 0; item < items; ++item) {
-          arg::read_shape_sketch(std::string_view(sketch[item], size[item]), *s.row);
-          const double d = arg::sketch_distance(*s.query, *s.row);
-          // Checked sketches give finite distances; a NaN would break the sort's order.
-          if (std::isnan(d)) throw arg::InputError("its distance is not a number");
-          s.hits[s.count + item].distance = d;
-        }
-      });
-      if (out.failure != argpg::Failure::None)
-        corrupted(index, block, psprintf("entry's sketch unreadable (%s)", out.message));
-    }
-    s.count += items;
-    at = block;
-    block = reinterpret_cast<PageOpaque*>(PageGetSpecialPointer(page))->next;
-    UnlockReleaseBuffer(buf);
-  }
+  walk_list(index, cell, BUFFER_LOCK_SHARE, nullptr, blocks, check_interrupts,
+            [&](Buffer, Page page, BlockNumber block) {
+              const OffsetNumber items = PageGetMaxOffsetNumber(page);
+              grow(s, items);
+              // Entries are checked outside the guarded loop (ereport may not run inside it).
+              const char* sketch[MaxOffsetNumber];
+              Size size[MaxOffsetNumber];
+              for (OffsetNumber item = FirstOffsetNumber; item <= items; ++item) {
+                Hit& hit = s.hits[s.count + item - 1];
+                read_entry(index, page, block, item, &hit.tid, &sketch[item - 1], &size[item - 1]);
+                hit.distance = 0;
+              }
+              if (!s.unordered) {
+                argpg::Outcome out = argpg::guarded([&] {
+                  for (OffsetNumber item = 0; item < items; ++item) {
+                    arg::read_shape_sketch(std::string_view(sketch[item], size[item]), *s.row);
+                    const double d = arg::sketch_distance(*s.query, *s.row);
+                    // Checked sketches give finite distances; a NaN would break the sort.
+                    if (std::isnan(d)) throw arg::InputError("its distance is not a number");
+                    s.hits[s.count + item].distance = d;
+                  }
+                });
+                if (out.failure != argpg::Failure::None)
+                  corrupted(index, block, psprintf("entry's sketch unreadable (%s)", out.message));
+              }
+              s.count += items;
+            });
 }
 
 void rank(IndexScanDesc scan, ScanState& s) {
@@ -124,7 +116,8 @@ void rank(IndexScanDesc scan, ScanState& s) {
   }
   // No ring buffer: a catalogue's lists are read again by the next search, so they should stay
   // in shared buffers.
-  for (uint32 p = 0; p < n_probed; ++p) read_list(scan, s, cells.refs[probed[p]]);
+  BlockNumber blocks = RelationGetNumberOfBlocks(index);
+  for (uint32 p = 0; p < n_probed; ++p) read_list(scan, s, cells.refs[probed[p]], &blocks);
   if (!s.unordered)
     std::sort(s.hits, s.hits + s.count, [](const Hit& a, const Hit& b) {
       if (a.distance != b.distance) return a.distance < b.distance;

@@ -18,41 +18,31 @@ void walk_lists(IndexVacuumInfo* info, IndexBulkDeleteResult* stats,
   const Cells cells = read_cells(index, false);
   BlockNumber blocks = RelationGetNumberOfBlocks(index);
   stats->num_index_tuples = 0;
-  for (uint32 c = 0; c < cells.count; ++c) {
-    BlockNumber block = cells.refs[c].first, at = cells.refs[c].page, pages = 0;
-    while (block != InvalidBlockNumber) {
-      vacuum_delay_point();
-      check_link(index, &blocks, cells.refs[c].first_list_page, block, at);
-      if (++pages > blocks) corrupted(index, block, "list links in a loop");
-      Buffer buf = ReadBufferExtended(index, MAIN_FORKNUM, block, RBM_NORMAL, info->strategy);
-      LockBuffer(buf, callback ? BUFFER_LOCK_EXCLUSIVE : BUFFER_LOCK_SHARE);
-      Page page = BufferGetPage(buf);
-      check_page(index, page, block, kListPage);
-      const OffsetNumber items = PageGetMaxOffsetNumber(page);
-      OffsetNumber dead[MaxOffsetNumber];
-      int n_dead = 0;
-      for (OffsetNumber item = FirstOffsetNumber; item <= items; ++item) {
-        ItemPointerData tid;
-        const char* sketch;
-        Size size;
-        read_entry(index, page, block, item, &tid, &sketch, &size);
-        if (callback && callback(&tid, callback_state))
-          dead[n_dead++] = item;
-        else
-          stats->num_index_tuples += 1;
-      }
-      if (n_dead > 0) {
-        GenericXLogState* state = GenericXLogStart(index);
-        Page changed = GenericXLogRegisterBuffer(state, buf, 0);
-        PageIndexMultiDelete(changed, dead, n_dead);
-        GenericXLogFinish(state);
-        stats->tuples_removed += n_dead;
-      }
-      at = block;
-      block = reinterpret_cast<PageOpaque*>(PageGetSpecialPointer(page))->next;
-      UnlockReleaseBuffer(buf);
-    }
-  }
+  for (uint32 c = 0; c < cells.count; ++c)
+    walk_list(index, cells.refs[c], callback ? BUFFER_LOCK_EXCLUSIVE : BUFFER_LOCK_SHARE,
+              info->strategy, &blocks, vacuum_delay_point,
+              [&](Buffer buf, Page page, BlockNumber block) {
+                const OffsetNumber items = PageGetMaxOffsetNumber(page);
+                OffsetNumber dead[MaxOffsetNumber];
+                int n_dead = 0;
+                for (OffsetNumber item = FirstOffsetNumber; item <= items; ++item) {
+                  ItemPointerData tid;
+                  const char* sketch;
+                  Size size;
+                  read_entry(index, page, block, item, &tid, &sketch, &size);
+                  if (callback && callback(&tid, callback_state))
+                    dead[n_dead++] = item;
+                  else
+                    stats->num_index_tuples += 1;
+                }
+                if (n_dead > 0) {
+                  GenericXLogState* state = GenericXLogStart(index);
+                  Page changed = GenericXLogRegisterBuffer(state, buf, 0);
+                  PageIndexMultiDelete(changed, dead, n_dead);
+                  GenericXLogFinish(state);
+                  stats->tuples_removed += n_dead;
+                }
+              });
   stats->num_pages = RelationGetNumberOfBlocks(index);
   pfree(cells.refs);
 }
