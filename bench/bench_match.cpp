@@ -1,12 +1,13 @@
 // Google Benchmark of comparing two ARGs (10k-triangle models) of the same and other classes,
-// with and without the per-graph preparation, of reading a stored value as a ranking does, and
-// of what an arg_ivf index does per entry and per filed row.
+// with and without the per-graph preparation, of reading a stored value as a ranking does, of
+// a ranking's row, and of what an arg_ivf index does per entry and per filed row.
 #include <benchmark/benchmark.h>
 
 #include "bench_models.hpp"
 #include "graph/serialize.hpp"
 #include "graph/sketch_cells.hpp"
 #include "match/match_prep.hpp"
+#include "match/packed_graph.hpp"
 #include "match/similarity.hpp"
 #include "pipeline/build_arg.hpp"
 
@@ -82,6 +83,30 @@ void BM_ReadStoredValue(benchmark::State& state) {
   state.counters["bytes"] = double(a.size() + b.size()) / 2;
 }
 
+// A brute-force ranking's work per row in SQL, past detoasting: the row's stored bytes read
+// straight into the matcher's keys, then SIM against the prepared query, alternating a row of
+// the query's class and one of another (what arg_sim does on every row of ORDER BY <~>).
+void BM_RankRow(benchmark::State& state) {
+  auto stored = [](ArgGraph g) {
+    g.summary.has_colour = 0;  // as every benchmark set: a row packs only without colour
+    for (ArgNode& n : g.nodes) n.colour.fill(0.0f);
+    return serialize_arg(g);
+  };
+  const ArgGraph query = deserialize_arg(stored(graph("human", 0)));
+  MatchPrep prep;
+  prepare_match(query, Weights{}, prep);
+  const std::string a = stored(graph("human", 2)), b = stored(graph("cup", 1));
+  PackedGraph row;
+  bool flip = false;
+  for (auto _ : state) {
+    double sim = 0;
+    if (!read_packed_graph((flip = !flip) ? a : b, Weights{}, row) ||
+        !packed_similarity(query, &prep, row, Weights{}, sim))
+      state.SkipWithError("the rows did not take the packed path");
+    benchmark::DoNotOptimize(sim);
+  }
+}
+
 // An arg_ivf search's work per entry: the entry's sketch bytes read strictly, then its
 // distance to the query's sketch.
 void BM_SketchEntry(benchmark::State& state) {
@@ -116,6 +141,7 @@ BENCHMARK(BM_NearestCell)
     ->Unit(benchmark::kMicrosecond)
     ->Repetitions(5)
     ->ReportAggregatesOnly(true);
+BENCHMARK(BM_RankRow)->Unit(benchmark::kMicrosecond)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(BM_SimSameClass)
     ->Unit(benchmark::kMicrosecond)
     ->Repetitions(5)

@@ -337,7 +337,7 @@ void read_panorama_bytes(ByteReader& in, std::uint32_t length, ArgGraph& g) {
 
 void read_sections(ByteReader& in, std::size_t end, ArgGraph& g, bool check_values) {
   std::uint32_t last = 0;
-  bool colour = false;
+  bool colour = false, panorama = false, spectrum = false;
   while (in.offset() < end) {
     const std::uint32_t tag = in.get<std::uint32_t>();
     const std::uint32_t length = in.get<std::uint32_t>();
@@ -346,11 +346,13 @@ void read_sections(ByteReader& in, std::size_t end, ArgGraph& g, bool check_valu
     if (length > end - in.offset()) in.fail("section runs past the end of the value");
     // Panorama features are means of values in [0, 1]; the spectrum is clamped to [1e-6, 1e3].
     if (tag == kTagPanorama && g.format == 2)
-      read_floats(in, length, kPanoramaSize, "panorama", 0.0f, 1.0001f, check_values, g.panorama);
+      read_floats(in, length, kPanoramaSize, "panorama", 0.0f, 1.0001f, check_values, g.panorama),
+          panorama = true;
     else if (tag == kTagSpectrum)
-      read_floats(in, length, kSpectrumSize, "spectrum", 1e-6f, 1e3f, check_values, g.spectrum);
+      read_floats(in, length, kSpectrumSize, "spectrum", 1e-6f, 1e3f, check_values, g.spectrum),
+          spectrum = true;
     else if (tag == kTagPanoramaBytes && g.format >= 3)
-      read_panorama_bytes(in, length, g);
+      read_panorama_bytes(in, length, g), panorama = true;
     else if (tag == kTagColour && g.format >= 3 && g.summary.has_colour) {
       if (length != g.nodes.size() * kCompactColourSize)
         in.fail("colour section of " + std::to_string(length) + " bytes, expected " +
@@ -364,6 +366,8 @@ void read_sections(ByteReader& in, std::size_t end, ArgGraph& g, bool check_valu
   }
   if (g.format >= 3 && g.summary.has_colour && !colour)
     in.fail("colour flag set but no colour section");
+  if (!panorama) g.panorama.clear();
+  if (!spectrum) g.spectrum.clear();
 }
 
 // Formats 1 and 2: the records, children and adjacency as they lie in memory.
@@ -484,8 +488,9 @@ Header begin_read(ByteReader& in, std::string_view bytes, ArgGraph& g, bool chec
          std::to_string(kHeaderSize1) + ")");
   g.options = BuildOptions{};
   g.summary = ArgSummary{};
-  g.panorama.clear();
-  g.spectrum.clear();
+  // The panorama and spectrum keep their storage until read_sections (or a format-1 value)
+  // has found whether the value holds them: emptied first, they were zero-filled again on
+  // every row of a ranking before being read over.
   return read_header(in, bytes, g, check_digest);
 }
 
@@ -502,7 +507,12 @@ void deserialize_arg_into(std::string_view bytes, ArgGraph& g, bool check_digest
   } else {
     read_float_records(in, g, h);
   }
-  if (h.version != 1) read_sections(in, bytes.size(), g, check_digest);
+  if (h.version != 1) {
+    read_sections(in, bytes.size(), g, check_digest);
+  } else {
+    g.panorama.clear();
+    g.spectrum.clear();
+  }
   // Values out of range cannot make anything read out of bounds; a value that passed the full
   // check on input only needs the structural one.
   if (check_digest)

@@ -52,11 +52,14 @@ struct MatchPrep {
   // Per level r, where each interval's nodes start (nodes of a level are sorted by interval):
   // interval_begin[interval_offset(r) + k] for k in 0 .. 2^r, the last being the level's end.
   std::vector<int> interval_begin;
-  // Per node, for Tung and Schmitt's rule: the distinct parents of its neighbours below, then
-  // of those above, each in adjacency order (roots' neighbours have none):
-  // parents[parent_begin[i], parent_split[i]) below, [parent_split[i], parent_begin[i + 1]) above.
-  std::vector<std::uint32_t> parent_begin, parent_split;
-  std::vector<int> parents;
+  // Per node, for Tung and Schmitt's rule: its neighbours below (in the previous interval),
+  // then those above, each in adjacency order: neighbours[neighbour_begin[i],
+  // neighbour_split[i]) below, [neighbour_split[i], neighbour_begin[i + 1]) above. Matching
+  // finds the groups of their parents when a node first needs them (most never do), so a
+  // graph read for one comparison does not list distinct parents for every node. One spare
+  // entry follows the lists, so that a list's first entry may be read before its length is
+  // looked at (match/packed_graph.cpp selects rather than branches).
+  std::vector<std::uint32_t> neighbour_begin, neighbour_split, neighbours;
   // Per node, its children in index order: children[child_begin[i], child_begin[i + 1]), those
   // in the upper half of its interval from child_mid[i] (match/child_halves.hpp); all three
   // empty when a child lies in neither half (the candidate scan then reads whole intervals).
@@ -88,33 +91,10 @@ void prepare_nodes(const ArgGraph& g, std::vector<std::array<int, 2>>& only,
 // direction (Hilaga's branch, labelled as one by a match). Returns how many; each key's branch
 // gets its node's, numbered from 0 in the order of their first nodes.
 int prepare_branches(const std::vector<std::array<int, 2>>& only, std::vector<MatchKey>& keys);
-void prepare_neighbour_parents(const ArgGraph& g, MatchPrep& out);
-// What both build from a node's neighbours below [below, below_end) and above [above,
-// above_end), each in adjacency order (a decoded graph's adjacency, or a row's edge list):
-// the one neighbour on a side, -1 when it has none or several, and node i's entries of the
-// neighbour parents (parents before parent_split[i] for those below), parent_of(j) being j's
-// parent (-1 for none).
+void prepare_neighbours(const ArgGraph& g, MatchPrep& out);
+// The one neighbour in [begin, end), -1 when there is none or several.
 inline int only_neighbour(const std::uint32_t* begin, const std::uint32_t* end) {
   return end - begin == 1 ? int(*begin) : -1;
-}
-template <class ParentOf>
-void add_neighbour_parents(std::size_t i, const std::uint32_t* below,
-                           const std::uint32_t* below_end, const std::uint32_t* above,
-                           const std::uint32_t* above_end, ParentOf&& parent_of, MatchPrep& out) {
-  out.parent_begin[i] = std::uint32_t(out.parents.size());
-  for (int side = 0; side < 2; ++side) {
-    if (side == 1) out.parent_split[i] = std::uint32_t(out.parents.size());
-    const std::size_t first = out.parents.size();
-    for (const std::uint32_t *j = side == 0 ? below : above,
-                             *end = side == 0 ? below_end : above_end;
-         j != end; ++j) {
-      const int p = parent_of(*j);
-      if (p < 0) continue;
-      bool seen = false;
-      for (std::size_t k = first; k < out.parents.size() && !seen; ++k) seen = out.parents[k] == p;
-      if (!seen) out.parents.push_back(p);
-    }
-  }
 }
 // Level r's part of interval_begin (2^r + 1 entries from `out`).
 void prepare_interval_begin(const ArgGraph& g, int r, int* out);
@@ -126,9 +106,9 @@ void fill_interval_begin(int b, int e, int r, IntervalOf&& interval_of, int* out
   for (int n = e - 1; n >= b; --n) out[interval_of(n)] = n;
   for (int k = intervals - 1; k >= 0; --k) out[k] = out[k] < out[k + 1] ? out[k] : out[k + 1];
 }
-// A node's place in its level's order: its self sim, then its index, in one integer (sorting
-// these took 0.7 of the time of sorting (double, int) pairs).
-using OrderKey = unsigned __int128;
+// A node's place in its level's order: the float nearest its self sim, then its index, in one
+// integer (prepare_order settles self sims that share a float).
+using OrderKey = std::uint64_t;
 // `keyed` (optional) is scratch space kept by a caller that prepares many graphs.
 void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out,
                   std::vector<OrderKey>* keyed = nullptr);

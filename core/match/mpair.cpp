@@ -36,7 +36,7 @@ struct Side {
   const std::uint32_t* child_mid = nullptr;
   const std::uint32_t* children = nullptr;
   std::vector<std::uint32_t> own_child_begin, own_child_mid, own_children;
-  const MatchPrep* prep = nullptr;  // its parents of neighbours, when it has a MatchPrep
+  const MatchPrep* prep = nullptr;  // its neighbour lists, when it has a MatchPrep
 
   void reset(const ArgGraph& graph, const MatchPrep* given) {
     g = &graph;
@@ -96,11 +96,11 @@ struct NeighbourParents {
     if (!seen && c < 4) list[c++] = gp;
   };
   if (const MatchPrep* prep = side.prep) {
-    // The same groups from the prepared parents (duplicates dropped there as they would be here).
-    const std::uint32_t split = prep->parent_split[std::size_t(i)];
-    for (std::uint32_t k = prep->parent_begin[std::size_t(i)];
-         k < prep->parent_begin[std::size_t(i) + 1]; ++k) {
-      const int gp = side.group[std::size_t(prep->parents[k])];
+    // The same groups from the prepared neighbour lists.
+    const std::uint32_t split = prep->neighbour_split[std::size_t(i)];
+    for (std::uint32_t k = prep->neighbour_begin[std::size_t(i)];
+         k < prep->neighbour_begin[std::size_t(i) + 1]; ++k) {
+      const int gp = side.parent_group(int(prep->neighbours[k]));
       if (gp >= 0) add(k >= split ? 1 : 0, gp);
     }
     return;
@@ -265,11 +265,23 @@ double match_graphs(const ArgGraph& gx, const MatchPrep* px, const ArgGraph& gy,
       const MatchKey& km = X.key[m];
       int best = -1;
       double best_loss = 0, best_sim = -1;
-      auto consider = [&](int n) {
-        if (!candidate(X, Y, m, n, pg)) return;
-        if (w.tung_rule && !neighbours_agree(s.x_parents.of(X, m), s.y_parents.of(Y, n))) return;
+      const int label_m = X.label(m);               // labels change only once m is matched
+      const NeighbourParents* parents_m = nullptr;  // found when a candidate first needs them
+      // `child` tells that n is a child of the Y node in m's parent's group, so its parent's
+      // group is m's: only its own group and label are then asked (with & rather than &&: one
+      // branch on their outcome, which is not predictable, instead of two).
+      auto consider = [&](int n, bool child) {
+        if (child ? !((Y.group[std::size_t(n)] < 0) & (label_m == Y.label(n)))
+                  : !candidate(X, Y, m, n, pg))
+          return;
         const double loss = node_loss(km, Y.key[n], gx.levels(), w);
         if (best >= 0 && loss > best_loss) return;
+        // Tung's rule after the loss: a candidate that loses on it is dropped either way, and
+        // the neighbours' parents cost more than the loss.
+        if (w.tung_rule) {
+          if (!parents_m) parents_m = &s.x_parents.of(X, m);
+          if (!neighbours_agree(*parents_m, s.y_parents.of(Y, n))) return;
+        }
         // Equal losses are settled by the larger sim, computed only then.
         if (best >= 0 && loss == best_loss) {
           if (best_sim < 0) best_sim = pair_sim(X, m, Y, best, w);
@@ -287,14 +299,15 @@ double match_graphs(const ArgGraph& gx, const MatchPrep* px, const ArgGraph& gy,
         // interval's candidates as a scan of the whole interval would meet them. m lies in a
         // half of its parent's interval (X's children are in halves), which is Y's parent's.
         const int parent = s.groups[std::size_t(pg)].y;
-        const bool upper = (km.interval & 1) != 0;
-        const std::uint32_t from = upper ? Y.child_mid[parent] : Y.child_begin[parent];
-        const std::uint32_t to = upper ? Y.child_begin[parent + 1] : Y.child_mid[parent];
-        for (std::uint32_t c = from; c < to; ++c) consider(int(Y.children[c]));
+        const std::uint32_t upper = km.interval & 1u;  // 1: the upper half, selected by sums
+        const std::uint32_t begin = Y.child_begin[parent], mid = Y.child_mid[parent],
+                            end = Y.child_begin[parent + 1];
+        const std::uint32_t from = begin + upper * (mid - begin), to = mid + upper * (end - mid);
+        for (std::uint32_t c = from; c < to; ++c) consider(int(Y.children[c]), true);
       } else {
         // Only Y's nodes of m's interval can be candidates.
         const int y_end = y_interval_begin[km.interval + 1];
-        for (int n = y_interval_begin[km.interval]; n < y_end; ++n) consider(n);
+        for (int n = y_interval_begin[km.interval]; n < y_end; ++n) consider(n, false);
       }
       if (best < 0) continue;
       const int gid = int(s.groups.size());

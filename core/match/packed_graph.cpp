@@ -18,7 +18,7 @@ namespace {
 // Buffers of one reader, reused row after row.
 struct PackedBuffers {
   CompactRecords records;
-  std::vector<std::uint32_t> below_begin, below, above_begin, above, fill;
+  std::vector<std::uint32_t> below, fill;
   std::vector<std::array<int, 2>> only;
   std::vector<OrderKey> keyed;
 };
@@ -29,23 +29,39 @@ struct PackedBuffers {
   return b;
 }
 
-// Each node's neighbours below (in the previous interval) and above, in the order of a decoded
-// graph's adjacency (graph/compact_nodes.cpp's link_read_graph): each list sorted.
-void neighbour_lists(std::size_t n, const CompactRecords& r, PackedBuffers& b) {
-  b.below_begin.assign(n + 1, 0);
-  b.above_begin.assign(n + 1, 0);
-  for (auto [lo, hi] : r.pairs) ++b.below_begin[hi + 1], ++b.above_begin[lo + 1];
-  for (std::size_t i = 0; i < n; ++i)
-    b.below_begin[i + 1] += b.below_begin[i], b.above_begin[i + 1] += b.above_begin[i];
-  // Pairs come by lower end: node i's upper ends are the pairs from above_begin[i], in order.
-  b.below.resize(r.pairs.size());
-  b.above.resize(r.pairs.size());
-  b.fill.assign(b.below_begin.begin(), b.below_begin.end() - 1);
-  for (std::size_t k = 0; k < r.pairs.size(); ++k) {
-    const auto [lo, hi] = r.pairs[k];
-    b.below[b.fill[hi]++] = lo;
-    b.above[k] = hi;
+// Each node's neighbours below (in the previous interval), then above, in the order of a
+// decoded graph's adjacency (graph/compact_nodes.cpp's link_read_graph): each list sorted.
+void neighbour_lists(std::size_t n, const CompactRecords& r, PackedBuffers& b, MatchPrep& p) {
+  std::vector<std::uint32_t>& below = b.below;  // per node, how many below
+  below.assign(n, 0);
+  p.neighbour_begin.assign(n + 1, 0);
+  for (auto [lo, hi] : r.pairs)
+    ++below[hi], ++p.neighbour_begin[lo + 1], ++p.neighbour_begin[hi + 1];
+  p.neighbour_split.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    p.neighbour_begin[i + 1] += p.neighbour_begin[i];
+    p.neighbour_split[i] = p.neighbour_begin[i] + below[i];
   }
+  p.neighbours.resize(2 * r.pairs.size() + 1);  // and the spare entry
+  p.neighbours.back() = 0;
+  // Pairs come by lower end, then upper end: each list fills in increasing order.
+  b.fill.assign(p.neighbour_begin.begin(), p.neighbour_begin.end() - 1);
+  std::uint32_t* above = below.data();  // reused: where each node's list above goes on
+  for (std::size_t i = 0; i < n; ++i) above[i] = p.neighbour_split[i];
+  for (auto [lo, hi] : r.pairs) {
+    p.neighbours[b.fill[hi]++] = lo;
+    p.neighbours[above[lo]++] = hi;
+  }
+}
+
+// The one neighbour below and above node i, -1 where there is none or several: selects rather
+// than branches (which neighbour counts a node has is not predictable).
+std::array<int, 2> only_neighbours(const MatchPrep& p, std::size_t i) {
+  const std::uint32_t b = p.neighbour_begin[i], split = p.neighbour_split[i],
+                      e = p.neighbour_begin[i + 1];
+  const int below = int(p.neighbours[b]), above = int(p.neighbours[split]);
+  // (x + 1) * one - 1: x when `one`, else -1, in arithmetic (GCC kept branches for ?:).
+  return {(below + 1) * int(split - b == 1) - 1, (above + 1) * int(e - split == 1) - 1};
 }
 
 }  // namespace
@@ -59,14 +75,11 @@ bool read_packed_graph(std::string_view bytes, const Weights& weights, PackedGra
   const ArgGraph& g = out.head;
   const std::size_t n = r.parent.size();
   out.adjacency = 2 * r.pairs.size();
-  neighbour_lists(n, r, b);
+  neighbour_lists(n, r, b, p);
   p.weights = weights;
   p.keys.resize(n);
   p.sim_keys.resize(n);
   b.only.resize(n);
-  p.parent_begin.resize(n + 1);
-  p.parent_split.resize(n);
-  p.parents.clear();
   const unsigned char* rec = r.records;
   for (std::size_t i = 0; i < n; ++i, rec += kCompactNodeSize) {
     const CompactScalars s = compact_scalars(rec);
@@ -74,35 +87,29 @@ bool read_packed_graph(std::string_view bytes, const Weights& weights, PackedGra
     SimKey& k = p.sim_keys[i];
     k.a = s.a, k.l = s.l, k.v = s.v, k.step = code_step(s.a);
     std::memcpy(k.code.data(), rec + kCompactCodesAt, kSimKeyCodes);
-    // As prepare_nodes and prepare_neighbour_parents find them in the decoded adjacency.
-    const std::uint32_t* below = b.below.data() + b.below_begin[i];
-    const std::uint32_t* below_end = b.below.data() + b.below_begin[i + 1];
-    const std::uint32_t* above = b.above.data() + b.above_begin[i];
-    const std::uint32_t* above_end = b.above.data() + b.above_begin[i + 1];
-    b.only[i] = {only_neighbour(below, below_end), only_neighbour(above, above_end)};
-    add_neighbour_parents(
-        i, below, below_end, above, above_end, [&r](std::uint32_t j) { return r.parent[j]; }, p);
+    // As prepare_nodes finds them in the decoded adjacency.
+    b.only[i] = only_neighbours(p, i);
   }
-  p.parent_begin[n] = std::uint32_t(p.parents.size());
   p.branches = prepare_branches(b.only, p.keys);
   // The lists of match/child_halves.cpp (which checks, for any graph, what the reader checked
   // here): children in index order, so a parent's lower half first (nodes of a level are sorted
   // by interval, and each lies in a half of its parent's interval).
   p.child_begin.assign(n + 1, 0);
+  p.child_mid.assign(n, 0);  // first each node's children in the lower half of its interval
   for (std::size_t i = 0; i < n; ++i)
-    if (r.parent[i] >= 0) ++p.child_begin[std::size_t(r.parent[i]) + 1];
-  for (std::size_t i = 0; i < n; ++i) p.child_begin[i + 1] += p.child_begin[i];
-  p.children.resize(p.child_begin[n]);
-  p.child_mid.assign(p.child_begin.begin() + 1, p.child_begin.end());
-  b.fill.assign(p.child_begin.begin(), p.child_begin.end() - 1);
+    if (r.parent[i] >= 0) {
+      const std::size_t parent = std::size_t(r.parent[i]);
+      ++p.child_begin[parent + 1];
+      p.child_mid[parent] += (r.interval[i] & 1) == 0;
+    }
   for (std::size_t i = 0; i < n; ++i) {
-    if (r.parent[i] < 0) continue;
-    const std::size_t parent = std::size_t(r.parent[i]);
-    const std::uint32_t at = b.fill[parent]++;
-    p.children[at] = std::uint32_t(i);
-    if ((r.interval[i] & 1) != 0 && p.child_mid[parent] == p.child_begin[parent + 1])
-      p.child_mid[parent] = at;
+    p.child_begin[i + 1] += p.child_begin[i];
+    p.child_mid[i] += p.child_begin[i];  // the lower half's children come first
   }
+  p.children.resize(p.child_begin[n]);
+  b.fill.assign(p.child_begin.begin(), p.child_begin.end() - 1);
+  for (std::size_t i = 0; i < n; ++i)
+    if (r.parent[i] >= 0) p.children[b.fill[std::size_t(r.parent[i])]++] = std::uint32_t(i);
   p.interval_begin.resize(interval_offset(g.levels() + 1));
   for (int level = 0; level <= g.levels(); ++level)
     fill_interval_begin(

@@ -6,6 +6,10 @@
 #include <cmath>
 #include <cstring>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "graph/quantise.hpp"
 
 namespace arg {
@@ -38,12 +42,38 @@ bool codes_of(const float* bins, std::size_t count, float total, std::uint8_t* o
 // exactly. Four running sums let the compiler use vector lanes.
 template <std::size_t N>
 double codes_min(const std::uint8_t* x, float sx, const std::uint8_t* y, float sy) {
+#if defined(__SSE2__)
+  // The same sums four codes at a time (every x86-64 has SSE2): lane q of the two double
+  // pairs is part[q] below, each float product, minimum and double sum the same IEEE
+  // operation, so the bits are those of the loop (test_sim_key.cpp checks them). The loop
+  // was a tenth of a ranking's instructions.
+  const __m128i zero = _mm_setzero_si128();
+  const __m128 vx = _mm_set1_ps(sx), vy = _mm_set1_ps(sy);
+  __m128d lo = _mm_setzero_pd(), hi = _mm_setzero_pd();  // part[0..1], part[2..3]
+  for (std::size_t k = 0; k < N; k += 4) {
+    std::int32_t wx, wy;
+    std::memcpy(&wx, x + k, 4);
+    std::memcpy(&wy, y + k, 4);
+    const __m128i ix = _mm_unpacklo_epi16(_mm_unpacklo_epi8(_mm_cvtsi32_si128(wx), zero), zero);
+    const __m128i iy = _mm_unpacklo_epi16(_mm_unpacklo_epi8(_mm_cvtsi32_si128(wy), zero), zero);
+    const __m128 bx = _mm_mul_ps(_mm_cvtepi32_ps(ix), vx), by = _mm_mul_ps(_mm_cvtepi32_ps(iy), vy);
+    // bx < by ? bx : by, which is what _mm_min_ps(bx, by) gives (its second operand unless
+    // the first is smaller), NaN included.
+    const __m128 m = _mm_min_ps(bx, by);
+    lo = _mm_add_pd(lo, _mm_cvtps_pd(m));
+    hi = _mm_add_pd(hi, _mm_cvtps_pd(_mm_movehl_ps(m, m)));
+  }
+  double part[4];
+  _mm_storeu_pd(part, lo);
+  _mm_storeu_pd(part + 2, hi);
+#else
   double part[4] = {0, 0, 0, 0};
   for (std::size_t k = 0; k < N; k += 4)
     for (std::size_t q = 0; q < 4; ++q) {
       const float bx = float(x[k + q]) * sx, by = float(y[k + q]) * sy;
       part[q] += bx < by ? bx : by;
     }
+#endif
   return (part[0] + part[1]) + (part[2] + part[3]);
 }
 

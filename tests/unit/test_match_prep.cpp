@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <map>
+#include <random>
 #include <utility>
 #include <vector>
 
@@ -182,4 +184,50 @@ TEST(MatchPrep, LevelOrderIsBySelfSimThenIndex) {
   }
   EXPECT_EQ(sums.order, expected);
   EXPECT_EQ(sums.order, (std::vector<int>{0, 3, 4, 1, 2, 14, 8, 11, 9, 6, 12, 13, 7, 5, 10, 15}));
+}
+
+TEST(MatchPrep, LevelOrderSettlesSelfSimsThatShareAFloat) {
+  // prepare_order sorts by the float of each self sim (insertion sort up to 32 nodes, a radix
+  // sort beyond) and settles runs of equal floats by the doubles: levels of 1, 20, 100 and 640
+  // nodes whose sims often share a float (neighbouring doubles, equal values, zeros of both
+  // signs), against sorting (-self, index) pairs.
+  std::mt19937 random(5);
+  std::uniform_int_distribution<int> pick(0, 5);
+  std::uniform_real_distribution<double> value(-2.0, 2.0);
+  for (int trial = 0; trial < 40; ++trial) {
+    MatchPrep::Sums sums;
+    const std::vector<std::uint32_t> level_begin = {0, 1, 21, 121, 761};
+    double last = 0.25;
+    for (std::uint32_t i = 0; i < level_begin.back(); ++i) {
+      switch (pick(random)) {
+        case 0:
+          last = value(random);
+          break;
+        case 1:
+          last = std::nextafter(last, 10.0);
+          break;  // most often the same float
+        case 2:
+          break;  // equal
+        case 3:
+          last = i % 2 ? 0.0 : -0.0;
+          break;
+        case 4:
+          last = 1.0 + value(random) * 1e-9;
+          break;  // one float, many doubles
+        default:
+          last = std::ldexp(value(random), int(i % 40) - 20);
+      }
+      sums.self.push_back(last);
+    }
+    prepare_order(level_begin, 3, sums);
+    std::vector<int> expected;
+    for (std::size_t r = 0; r + 1 < level_begin.size(); ++r) {
+      std::vector<std::pair<double, int>> keyed;
+      for (std::uint32_t i = level_begin[r]; i < level_begin[r + 1]; ++i)
+        keyed.push_back({-sums.self[i] + 0.0, int(i)});  // + 0.0: both zeros as one
+      std::sort(keyed.begin(), keyed.end());
+      for (const auto& k : keyed) expected.push_back(k.second);
+    }
+    ASSERT_EQ(sums.order, expected) << "trial " << trial;
+  }
 }

@@ -71,9 +71,9 @@ TEST(PackedGraph, PrepIsTheDecodedGraphsPrepByteForByte) {
       ASSERT_FALSE(full.sim_keys.empty());
       EXPECT_TRUE(same_bytes(p.sim_keys, full.sim_keys));
       EXPECT_EQ(p.interval_begin, full.interval_begin);
-      EXPECT_EQ(p.parent_begin, full.parent_begin);
-      EXPECT_EQ(p.parent_split, full.parent_split);
-      EXPECT_EQ(p.parents, full.parents);
+      EXPECT_EQ(p.neighbour_begin, full.neighbour_begin);
+      EXPECT_EQ(p.neighbour_split, full.neighbour_split);
+      EXPECT_EQ(p.neighbours, full.neighbours);
       ASSERT_FALSE(full.child_begin.empty());
       EXPECT_EQ(p.child_begin, full.child_begin);
       EXPECT_EQ(p.child_mid, full.child_mid);

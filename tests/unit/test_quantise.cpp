@@ -1,6 +1,7 @@
 // Format 3's codecs: every code decodes and encodes back to itself; errors stay within a step.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -94,6 +95,30 @@ TEST(Quantise, SquareRootBlocksKeepSmallValuesAndComeBack) {
   std::array<float, 4> zeros{};
   std::array<std::uint8_t, 4> q{};
   EXPECT_EQ(quantise_sqrt_block(zeros.data(), 4, q.data()), 0.0f);
+}
+
+TEST(Quantise, CanonicalChecksAgreeWithTheirDefinition) {
+  // canonical_bins sums eight codes in one word and canonical_sqrt_block looks for a 255 with
+  // memchr: both against the plain definitions, on random and edge codes.
+  std::mt19937 random(13);
+  std::uniform_int_distribution<int> byte(0, 255), small(0, 40);
+  for (int trial = 0; trial < 20000; ++trial) {
+    std::array<std::uint8_t, 16> q{};
+    for (auto& x : q) x = std::uint8_t(trial % 3 == 0 ? byte(random) : small(random));
+    if (trial % 7 == 0) q.fill(trial % 2 ? 255 : 0);
+    for (std::size_t count : {std::size_t(8), std::size_t(5), std::size_t(16)}) {
+      unsigned sum = 0;
+      for (std::size_t k = 0; k < count; ++k) sum += q[k];
+      for (std::uint16_t total : {std::uint16_t(0), std::uint16_t(1), std::uint16_t(65535)})
+        ASSERT_EQ(canonical_bins(q.data(), count, total), total == 0 ? sum == 0 : sum <= 255)
+            << trial << " " << count;
+      const std::uint8_t top = *std::max_element(q.begin(), q.begin() + std::ptrdiff_t(count));
+      for (float scale : {0.0f, kMinBlockScale, kMinBlockScale / 2, 0.5f, -1.0f, NAN})
+        ASSERT_EQ(canonical_sqrt_block(q.data(), count, scale),
+                  scale == 0 ? top == 0 : scale >= kMinBlockScale && top == 255)
+            << trial << " " << count << " " << scale;
+    }
+  }
 }
 
 }  // namespace
