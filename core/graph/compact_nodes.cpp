@@ -175,9 +175,8 @@ void read_compact_records(ByteReader& in, const std::vector<std::uint32_t>& leve
     up[i] = rec[3];
     if (rec[4] > rec[5]) bad("mu range reversed");
     const std::uint16_t area = get16(rec + 9);
-    if (!canonical_bins(rec + kCompactCodesAt, kCordBins, area) ||
-        !canonical_bins(rec + kCompactCodesAt + kCordBins, kCurvatureBins, area) ||
-        !canonical_bins(rec + kCompactCodesAt + kCordBins + kCurvatureBins, kCurvatureBins, area))
+    static_assert(kCordBins == 8 && kCurvatureBins == 8, "three histograms of eight codes");
+    if (!canonical_bins_3x8(rec + kCompactCodesAt, area))
       bad("histogram codes sum over 255, or fill a node without area");
     // Nodes sorted by interval within a level, each a child of a node of its interval's half:
     // what check_structure would ask, checked here so that format 3 can skip it.

@@ -98,7 +98,7 @@ TEST(Quantise, SquareRootBlocksKeepSmallValuesAndComeBack) {
 }
 
 TEST(Quantise, CanonicalChecksAgreeWithTheirDefinition) {
-  // canonical_bins sums eight codes in one word and canonical_sqrt_block looks for a 255 with
+  // canonical_bins_3x8 sums eight codes at once and canonical_sqrt_block looks for a 255 with
   // memchr: both against the plain definitions, on random and edge codes.
   std::mt19937 random(13);
   std::uniform_int_distribution<int> byte(0, 255), small(0, 40);
@@ -112,6 +112,22 @@ TEST(Quantise, CanonicalChecksAgreeWithTheirDefinition) {
       for (std::uint16_t total : {std::uint16_t(0), std::uint16_t(1), std::uint16_t(65535)})
         ASSERT_EQ(canonical_bins(q.data(), count, total), total == 0 ? sum == 0 : sum <= 255)
             << trial << " " << count;
+      if (count == 16)
+        for (std::uint16_t total : {std::uint16_t(0), std::uint16_t(7)}) {
+          std::array<std::uint8_t, 24> three{};  // the first eight codes again after these
+          std::copy(q.begin(), q.end(), three.begin());
+          std::copy(q.begin(), q.begin() + 8, three.begin() + 16);
+          const bool each = canonical_bins(three.data(), 8, total) &&
+                            canonical_bins(three.data() + 8, 8, total) &&
+                            canonical_bins(three.data() + 16, 8, total);
+          ASSERT_EQ(canonical_bins_3x8(three.data(), total), each) << trial;
+          std::swap(three[3], three[20]);  // the third histogram its own
+          ASSERT_EQ(canonical_bins_3x8(three.data(), total),
+                    canonical_bins(three.data(), 8, total) &&
+                        canonical_bins(three.data() + 8, 8, total) &&
+                        canonical_bins(three.data() + 16, 8, total))
+              << trial;
+        }
       const std::uint8_t top = *std::max_element(q.begin(), q.begin() + std::ptrdiff_t(count));
       for (float scale : {0.0f, kMinBlockScale, kMinBlockScale / 2, 0.5f, -1.0f, NAN})
         ASSERT_EQ(canonical_sqrt_block(q.data(), count, scale),
