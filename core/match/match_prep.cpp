@@ -109,10 +109,6 @@ std::uint32_t descending(float x) {
   return ~ascending;
 }
 
-}  // namespace
-
-namespace {
-
 // Sorts keys by their upper 32 bits, keeping the order of equal ones, with room for n more at
 // `spare`: an LSD radix sort, a byte a pass, passes where every key has the same byte skipped.
 // A comparison sort's branches on keys in no order are mostly mispredicted: ordering a shrec07
