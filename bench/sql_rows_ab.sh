@@ -31,7 +31,7 @@ done
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 ms_of() { grep -o 'Execution Time: [0-9.]*' | awk '{ print $3 }'; }
 : >"$work/load_a" ; : >"$work/load_b"; : >"$work/rank_a"; : >"$work/rank_b"
-for round in 1 2 3; do
+for _ in 1 2 3; do
   for side in a b; do
     run -c "DROP TABLE IF EXISTS rows_$side" \
       -c "CREATE TABLE rows_$side (id int PRIMARY KEY, museum text, period text, class text, descr arg)"
