@@ -62,16 +62,20 @@ void BM_PrepareMatch(benchmark::State& state) {
   for (auto _ : state) prepare_match(graph("human", 2), Weights{}, prep);
 }
 
+// A graph's stored bytes with its colour left out, as for most scans and every benchmark set
+// (a ranking's row is read straight into the matcher's keys only without colour).
+std::string stored_without_colour(ArgGraph g) {
+  g.summary.has_colour = 0;
+  for (ArgNode& n : g.nodes) n.colour.fill(0.0f);
+  return serialize_arg(g);
+}
+
 // Reading a row's stored bytes into a graph that held another value, as the ranking's cache
 // slot does (stored values were checked on input: no digest pass). Argument 1: the models'
 // colour kept; 0: left out, as for most scans and every benchmark set.
 void BM_ReadStoredValue(benchmark::State& state) {
-  auto stored = [&](ArgGraph g) {
-    if (state.range(0) == 0) {
-      g.summary.has_colour = 0;
-      for (ArgNode& n : g.nodes) n.colour.fill(0.0f);
-    }
-    return serialize_arg(g);
+  auto stored = [&](const ArgGraph& g) {
+    return state.range(0) == 0 ? stored_without_colour(g) : serialize_arg(g);
   };
   const std::string a = stored(graph("human", 0)), b = stored(graph("cup", 1));
   ArgGraph slot;
@@ -87,15 +91,11 @@ void BM_ReadStoredValue(benchmark::State& state) {
 // straight into the matcher's keys, then SIM against the prepared query, alternating a row of
 // the query's class and one of another (what arg_sim does on every row of ORDER BY <~>).
 void BM_RankRow(benchmark::State& state) {
-  auto stored = [](ArgGraph g) {
-    g.summary.has_colour = 0;  // as every benchmark set: a row packs only without colour
-    for (ArgNode& n : g.nodes) n.colour.fill(0.0f);
-    return serialize_arg(g);
-  };
-  const ArgGraph query = deserialize_arg(stored(graph("human", 0)));
+  const ArgGraph query = deserialize_arg(stored_without_colour(graph("human", 0)));
   MatchPrep prep;
   prepare_match(query, Weights{}, prep);
-  const std::string a = stored(graph("human", 2)), b = stored(graph("cup", 1));
+  const std::string a = stored_without_colour(graph("human", 2)),
+                    b = stored_without_colour(graph("cup", 1));
   PackedGraph row;
   bool flip = false;
   for (auto _ : state) {
@@ -131,45 +131,21 @@ void BM_NearestCell(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(nearest_cell(row, centres.data(), centres.size()));
 }
 
+// Every benchmark: microseconds, the median of five repetitions.
+void five_repetitions(benchmark::internal::Benchmark* b) {
+  b->Unit(benchmark::kMicrosecond)->Repetitions(5)->ReportAggregatesOnly(true);
+}
+
 }  // namespace
 
-BENCHMARK(BM_SketchEntry)
-    ->Unit(benchmark::kMicrosecond)
-    ->Repetitions(5)
-    ->ReportAggregatesOnly(true);
-BENCHMARK(BM_NearestCell)
-    ->Unit(benchmark::kMicrosecond)
-    ->Repetitions(5)
-    ->ReportAggregatesOnly(true);
-BENCHMARK(BM_RankRow)->Unit(benchmark::kMicrosecond)->Repetitions(5)->ReportAggregatesOnly(true);
-BENCHMARK(BM_SimSameClass)
-    ->Unit(benchmark::kMicrosecond)
-    ->Repetitions(5)
-    ->ReportAggregatesOnly(true);
-BENCHMARK(BM_SimOtherClass)
-    ->Unit(benchmark::kMicrosecond)
-    ->Repetitions(5)
-    ->ReportAggregatesOnly(true);
-BENCHMARK(BM_SimSameClassMrg)
-    ->Unit(benchmark::kMicrosecond)
-    ->Repetitions(5)
-    ->ReportAggregatesOnly(true);
-BENCHMARK(BM_SimOctopus)->Unit(benchmark::kMicrosecond)->Repetitions(5)->ReportAggregatesOnly(true);
-BENCHMARK(BM_SimQueryPrepared)
-    ->Unit(benchmark::kMicrosecond)
-    ->Repetitions(5)
-    ->ReportAggregatesOnly(true);
-BENCHMARK(BM_SimBothPrepared)
-    ->Unit(benchmark::kMicrosecond)
-    ->Repetitions(5)
-    ->ReportAggregatesOnly(true);
-BENCHMARK(BM_PrepareMatch)
-    ->Unit(benchmark::kMicrosecond)
-    ->Repetitions(5)
-    ->ReportAggregatesOnly(true);
-BENCHMARK(BM_ReadStoredValue)
-    ->Arg(0)
-    ->Arg(1)
-    ->Unit(benchmark::kMicrosecond)
-    ->Repetitions(5)
-    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_SketchEntry)->Apply(five_repetitions);
+BENCHMARK(BM_NearestCell)->Apply(five_repetitions);
+BENCHMARK(BM_RankRow)->Apply(five_repetitions);
+BENCHMARK(BM_SimSameClass)->Apply(five_repetitions);
+BENCHMARK(BM_SimOtherClass)->Apply(five_repetitions);
+BENCHMARK(BM_SimSameClassMrg)->Apply(five_repetitions);
+BENCHMARK(BM_SimOctopus)->Apply(five_repetitions);
+BENCHMARK(BM_SimQueryPrepared)->Apply(five_repetitions);
+BENCHMARK(BM_SimBothPrepared)->Apply(five_repetitions);
+BENCHMARK(BM_PrepareMatch)->Apply(five_repetitions);
+BENCHMARK(BM_ReadStoredValue)->Arg(0)->Arg(1)->Apply(five_repetitions);
