@@ -126,5 +126,18 @@ void BM_DeserialiseWithoutDigest(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(deserialize_arg(bytes, false));
   set_counters(state);
 }
+// A value's way in and out as text, as COPY takes it: arg_in checks every byte and the digest.
+void BM_ValueFromText(benchmark::State& state) {
+  const std::string text = arg_to_text(serialize_arg(build_arg(input(state))));
+  for (auto _ : state) benchmark::DoNotOptimize(arg_from_text(text));
+  set_counters(state);
+}
+void BM_ValueToText(benchmark::State& state) {
+  const std::string bytes = serialize_arg(build_arg(input(state)));
+  for (auto _ : state) benchmark::DoNotOptimize(arg_to_text(bytes));
+  set_counters(state);
+}
 }  // namespace
 BENCHMARK(BM_DeserialiseWithoutDigest)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ValueFromText)->Arg(10000)->Unit(benchmark::kMicrosecond)->Repetitions(5);
+BENCHMARK(BM_ValueToText)->Arg(10000)->Unit(benchmark::kMicrosecond)->Repetitions(5);

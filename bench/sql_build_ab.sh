@@ -8,6 +8,8 @@
 # ones (EXPLAIN ANALYZE of ORDER BY descr <~> (row 1) LIMIT 10): a new backend's first
 # ranking also maps every shared buffer it reads. Prints each build's median and the
 # ratio; the arg.so found at the start is put back at the end. Needs write access to pkglibdir.
+# MEASURE=copy times the text form's way in and out instead: each round and build, TRUNCATE
+# and COPY the rows in (every value checked by arg_in), then COPY them out (arg_out).
 set -euo pipefail
 [[ $# -ge 3 ]] || { sed -n 2,10p "$0"; exit 2; }
 file=$(realpath "$1") so_a=$(realpath "$2") so_b=$(realpath "$3") rounds=${4:-6}
@@ -27,6 +29,28 @@ awk -F'\t' 'BEGIN { OFS = "\t" } { line[NR] = $0 }
     split(line[i], f, "\t"); f[1] = ++id; out = f[1];
     for (k = 2; k <= length(f); ++k) out = out "\t" f[k]; print out } }' "$file" >"$work/rows.txt"
 run -c "\\copy r FROM '$work/rows.txt'" -c 'VACUUM ANALYZE r'
+median() { sort -g "$1" | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+rows=$(run -tA -c 'SELECT count(*) FROM r')
+if [[ "${MEASURE:-rank}" == copy ]]; then
+  timed() { run -c '\timing on' "$@" | grep -o 'Time: [0-9.]*' | awk '{ print $2 }'; }
+  for side in a b; do : >"$work/$side.in" && : >"$work/$side.out"; done
+  for ((round = 0; round < rounds; ++round)); do
+    for side in a b; do
+      install_so "$([[ $side == a ]] && echo "$so_a" || echo "$so_b")"
+      run -c 'TRUNCATE r'
+      timed -c "\\copy r FROM '$work/rows.txt'" >>"$work/$side.in"
+      timed -c "\\copy r TO '/dev/null'" >>"$work/$side.out"
+    done
+  done
+  awk -v n="$rows" -v ai="$(median "$work/a.in")" -v bi="$(median "$work/b.in")" \
+    -v ao="$(median "$work/a.out")" -v bo="$(median "$work/b.out")" -v k="$rounds" 'BEGIN {
+    printf "| build | rounds | COPY in, median ms | rows/s | COPY out, median ms | rows/s |\n";
+    printf "|---|---|---|---|---|---|\n";
+    printf "| A | %d | %.1f | %.0f | %.1f | %.0f |\n", k, ai, 1000 * n / ai, ao, 1000 * n / ao;
+    printf "| B | %d | %.1f | %.0f | %.1f | %.0f |\n", k, bi, 1000 * n / bi, bo, 1000 * n / bo;
+    printf "ratio B / A: in %.3f, out %.3f\n", bi / ai, bo / ao }'
+  exit 0
+fi
 rank="EXPLAIN (ANALYZE, TIMING OFF) SELECT id FROM r
   ORDER BY descr <~> (SELECT descr FROM r WHERE id = 1) LIMIT 10;"
 : >"$work/a"
@@ -38,8 +62,6 @@ for ((round = 0; round < rounds; ++round)); do
       grep -o 'Execution Time: [0-9.]*' | awk '{ print $3 }' | tail -n +2 >>"$work/$side"
   done
 done
-median() { sort -g "$1" | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
-rows=$(run -tA -c 'SELECT count(*) FROM r')
 ma=$(median "$work/a") mb=$(median "$work/b")
 awk -v a="$ma" -v b="$mb" -v n="$rows" -v ka="$(wc -l <"$work/a")" 'BEGIN {
   printf "| build | rankings | median ms | us a row |\n|---|---|---|---|\n";

@@ -49,6 +49,12 @@ bool read_compact_value(std::string_view bytes, ArgGraph& head, CompactRecords& 
 // Only the checks, no copy.
 void validate_arg_bytes(std::string_view bytes);
 
+// The ranges of a node's values, checked on input for float records (formats 1 and 2): unit
+// values within [0, 1.0001], r within [0, 1e6], theta and phi within their angles, an ordered
+// mu range, every histogram bin a unit value. Throws InputError naming node `i`. Format 3's
+// codes decode into these ranges (tests/unit/test_compact_nodes.cpp).
+void check_node_values(const ArgNode& n, std::size_t i);
+
 // 64-bit content digest stored in the header (used for equality, hashing and canonical order).
 std::uint64_t arg_digest(std::string_view bytes);
 

@@ -1,6 +1,8 @@
 // Format 3's node records: read back as written, and every field checked on the way in.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 
 #include "common/errors.hpp"
@@ -91,6 +93,58 @@ TEST(CompactNodes, ALevelOverTheBoundIsRefused) {
     b[28] = char(0xff), b[29] = char(0xff);  // node count 65,535
   }));
   EXPECT_NE(message.find("node count"), std::string::npos) << message;
+}
+
+// The input check of float records (check_node_values) is not run on format 3: no code may
+// decode outside its ranges. Every scalar code, every histogram code under every area code,
+// and mu ranges at both ends of every interval of the torus's levels.
+TEST(CompactNodes, NoCodeDecodesOutsideTheRangesOfFloatRecords) {
+  ArgNode n;
+  for (int q = 0; q < 256; ++q) {
+    n.theta = compact_detail::theta_values[std::size_t(q)];
+    n.phi = compact_detail::phi_values[std::size_t(q)];
+    n.r = compact_detail::radius_values[std::size_t(q)];
+    EXPECT_NO_THROW(check_node_values(n, 0)) << "angle or radius code " << q;
+  }
+  n = ArgNode{};
+  std::size_t out_of_range = 0;
+  for (std::uint32_t area = 0; area <= 0xffff; ++area) {
+    const float a = unit16_value(std::uint16_t(area));
+    const float step = code_step(a);
+    for (int code = 0; code < 256; ++code) {
+      const float bin = float(code) * step;
+      out_of_range += !(std::isfinite(bin) && bin >= 0.0f && bin <= 1.0001f);
+    }
+    // Through the check itself: the area as every unit value, and its largest bin.
+    n.a = n.l = n.v = a;
+    std::uint8_t codes[kCordBins] = {255};
+    bins_values(codes, kCordBins, a, n.cords.data());
+    n.curv_mean = n.curv_gauss = n.cords;
+    std::copy(n.cords.begin(), n.cords.end(), n.colour.begin());
+    if (area % 4096 == 0 || area == 0xffff) {
+      EXPECT_NO_THROW(check_node_values(n, 0)) << area;
+    }
+    out_of_range += !(n.cords[0] <= 1.0001f && n.cords[0] >= 0.0f);
+  }
+  EXPECT_EQ(out_of_range, 0u);
+  // Every node of the torus with the widest mu range, the largest codes and full histograms.
+  const std::string wide = changed([](std::string& b) {
+    const ArgGraph g = deserialize_arg(torus_bytes());
+    for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+      char* rec = b.data() + kRecords + i * kCompactNodeSize;
+      rec[4] = 0, rec[5] = char(255);                                         // the whole interval
+      rec[6] = rec[7] = rec[8] = char(255);                                   // theta, phi, r
+      rec[9] = rec[10] = rec[11] = rec[12] = rec[13] = rec[14] = char(0xff);  // a, l, v
+      for (std::size_t h = 0; h < 3; ++h)
+        for (std::size_t k = 0; k < kCordBins; ++k)
+          rec[kCompactCodesAt + h * kCordBins + k] = char(k == 0 ? 255 : 0);
+    }
+  });
+  const ArgGraph g = deserialize_arg(wide);
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    EXPECT_NO_THROW(check_node_values(g.nodes[i], i));
+    EXPECT_EQ(g.nodes[i].mu_max, float((g.nodes[i].interval + 1.0) / (1u << g.nodes[i].level)));
+  }
 }
 
 }  // namespace
