@@ -5,11 +5,11 @@
 
 #include "bench_models.hpp"
 #include "graph/serialize.hpp"
-#include "graph/sketch_cells.hpp"
 #include "match/match_prep.hpp"
 #include "match/packed_graph.hpp"
 #include "match/similarity.hpp"
 #include "pipeline/build_arg.hpp"
+#include "search/sketch_cells.hpp"
 
 using namespace arg;
 

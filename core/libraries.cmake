@@ -9,7 +9,14 @@
 # argeval. Plain C++17, no PostgreSQL headers; position independent (linked into the extension).
 
 set(ARG_METHOD_SOURCES
-    common/base64.cpp common/key_values.cpp common/limits.cpp common/parallel_for.cpp
+    common/base64.cpp common/build_options.cpp common/key_values.cpp common/limits.cpp
+    common/parallel_for.cpp
+    mesh/append_faces.cpp mesh/boundary_loops.cpp mesh/bridge_pieces.cpp mesh/clean_mesh.cpp
+    mesh/coincident_vertices.cpp mesh/collapse_short_edges.cpp mesh/connected_components.cpp
+    mesh/distance_field.cpp mesh/face_subset.cpp mesh/fill_holes.cpp
+    mesh/marching_tetrahedra.cpp mesh/mesh_edges.cpp mesh/normal_pose.cpp
+    mesh/normalize_pose.cpp mesh/stitch_pieces.cpp mesh/surface_area.cpp
+    mesh/taubin_smoothing.cpp mesh/watertight_proxy.cpp
     # io: one parser per mesh format (see each reader's header comment), images, GLB, writers
     io/decode_image.cpp io/detect_format.cpp io/glb_container.cpp io/gltf_accessor.cpp
     io/image_decoder.cpp io/image_format_checks.cpp io/memory_stream.cpp io/off_header.cpp
@@ -18,23 +25,18 @@ set(ARG_METHOD_SOURCES
     io/read_ply.cpp io/read_stl.cpp io/read_stl_ascii.cpp io/soup_importer.cpp
     io/soup_to_mesh.cpp io/text_scan.cpp io/texture_sampling.cpp io/tinygltf_impl.cpp
     io/triangulate_polygon.cpp io/write_mesh.cpp
-    mesh/clean_mesh.cpp mesh/coincident_vertices.cpp mesh/collapse_short_edges.cpp
-    mesh/connected_components.cpp
-    mesh/append_faces.cpp mesh/boundary_loops.cpp mesh/bridge_pieces.cpp mesh/distance_field.cpp mesh/face_subset.cpp mesh/fill_holes.cpp mesh/marching_tetrahedra.cpp
-    mesh/mesh_edges.cpp
-    mesh/normal_pose.cpp mesh/normalize_pose.cpp mesh/surface_area.cpp mesh/taubin_smoothing.cpp
-    mesh/stitch_pieces.cpp mesh/watertight_proxy.cpp
     mu/dijkstra.cpp mu/geodesic_integral.cpp mu/mu_function.cpp mu/surface_graph.cpp
     reeb/reeb_levels.cpp reeb/slice_intervals.cpp
+    graph/arg_graph.cpp graph/comparable.cpp graph/compact_nodes.cpp graph/node_bound.cpp
+    graph/panorama_codes.cpp graph/quantise.cpp graph/serialize.cpp
     features/curvature.cpp features/depth_buffer_descriptor.cpp features/depth_images.cpp
     features/laplace_spectrum.cpp features/node_attributes.cpp features/panorama_descriptor.cpp
     features/panoramic_views.cpp features/shape_distributions.cpp
-    graph/arg_graph.cpp graph/comparable.cpp graph/compact_nodes.cpp graph/pool_fragments.cpp
-    graph/panorama_codes.cpp graph/quantise.cpp graph/search_descriptor.cpp graph/shape_sketch.cpp graph/sketch_cells.cpp graph/serialize.cpp
     match/child_halves.cpp match/match_prep.cpp match/mpair.cpp match/node_similarity.cpp
     match/packed_graph.cpp match/part_match.cpp match/sim_key.cpp match/similarity.cpp
     match/similarity_terms.cpp match/subgraph.cpp match/weights.cpp
-    pipeline/build_arg.cpp pipeline/build_options.cpp pipeline/node_positions.cpp
+    search/search_descriptor.cpp search/shape_sketch.cpp search/sketch_cells.cpp
+    pipeline/build_arg.cpp pipeline/node_positions.cpp pipeline/pool_fragments.cpp
     pipeline/prepare_surface.cpp)
 set(ARG_GEN_SOURCES
     gen/creature_models.cpp gen/furniture_models.cpp gen/generate_models.cpp

@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <array>
 
-#include "graph/search_descriptor.hpp"
 #include "graph/serialize.hpp"
+#include "search/search_descriptor.hpp"
 
 #include "arg_bridge.hpp"
 

@@ -5,7 +5,7 @@
 
 #include <climits>
 
-#include "graph/sketch_cells.hpp"
+#include "search/sketch_cells.hpp"
 
 #include "arg_bridge.hpp"
 

@@ -10,7 +10,7 @@
 // is WAL-logged with generic WAL records.
 #pragma once
 
-#include "graph/shape_sketch.hpp"
+#include "search/shape_sketch.hpp"
 
 #include "arg_bridge.hpp"
 #include "arg_guc.hpp"

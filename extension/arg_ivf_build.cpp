@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "common/parallel_for.hpp"
-#include "graph/sketch_cells.hpp"
+#include "search/sketch_cells.hpp"
 
 #include "arg_guc.hpp"
 #include "arg_ivf.hpp"

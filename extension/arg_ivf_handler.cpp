@@ -1,7 +1,7 @@
 // The arg_ivf access method: its handler, reloption, cost estimate and opclass check.
 #include <algorithm>
 
-#include "graph/sketch_cells.hpp"
+#include "search/sketch_cells.hpp"
 
 #include "arg_ivf.hpp"
 

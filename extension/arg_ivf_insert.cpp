@@ -1,5 +1,5 @@
 // Inserting into an arg_ivf index: a new row joins the list of its nearest centre.
-#include "graph/sketch_cells.hpp"
+#include "search/sketch_cells.hpp"
 
 #include "arg_ivf.hpp"
 

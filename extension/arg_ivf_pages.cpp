@@ -1,6 +1,6 @@
 // The arg_ivf index's pages: checked reads of the metapage, cells and entries, new pages, and
 // appending an entry to a cell's list.
-#include "graph/sketch_cells.hpp"
+#include "search/sketch_cells.hpp"
 
 #include "arg_ivf.hpp"
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "graph/sketch_cells.hpp"
+#include "search/sketch_cells.hpp"
 
 #include "arg_ivf.hpp"
 

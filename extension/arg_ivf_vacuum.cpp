@@ -1,5 +1,5 @@
 // VACUUM of an arg_ivf index: entries of removed rows leave their list pages.
-#include "graph/sketch_cells.hpp"
+#include "search/sketch_cells.hpp"
 
 #include "arg_ivf.hpp"
 

@@ -2,7 +2,7 @@
 #include <type_traits>
 
 #include "graph/serialize.hpp"
-#include "graph/shape_sketch.hpp"
+#include "search/shape_sketch.hpp"
 
 #include "arg_bridge.hpp"
 #include "arg_weights.hpp"

@@ -3,6 +3,8 @@
 #   unit        GoogleTest, one shard a core (the CMake build in $BUILD_DIR; test_reference.cpp:
 #               docs/REFERENCE.md covers every build option, weight key and preset)
 #   argtool     tests/argtool/cli.sh: fast start, images loaded on demand, progress in a log file
+#   stages      tests/layering/check_stages.sh: core/stages.cmake refuses includes against the
+#               stage order (and passes on the tree)
 #   regression  pg_regress on sql/ + expected/ (make installcheck)
 #   pgtap       pg_prove on tests/pgtap/*.sql (04_reference.sql: docs/REFERENCE.md covers the SQL
 #               objects, settings and SQLSTATEs)
@@ -141,6 +143,10 @@ gtest_shards "unit tests (googletest)" "$build" unit
 # --- argtool as scripts run it ---------------------------------------------------------------
 banner "argtool command line"
 tap_script "argtool command line" argtool 1 tests/argtool/cli.sh "$build/argtool"
+
+# --- the core's stage order ------------------------------------------------------------------
+banner "core stage order"
+tap_script "core stage order" layering 1 tests/layering/check_stages.sh
 
 # --- the throwaway cluster ------------------------------------------------------------------
 banner "throwaway cluster"

@@ -4,11 +4,10 @@
 #include <vector>
 
 #include "common/limits.hpp"
+#include "graph/whole_shape_layout.hpp"
 #include "mesh/mesh.hpp"
 
 namespace arg {
-
-inline constexpr int kSpectrumSize = 20;
 
 // The first `count` non-zero eigenvalues lambda_i of -Delta u = lambda u on the largest
 // component of `mesh` (cotangent weights, lumped mass, free boundary), each times area / (4 pi
@@ -16,8 +15,8 @@ inline constexpr int kSpectrumSize = 20;
 // surface's metric, so bending (a new pose) leaves them nearly as they are, while proportions
 // and topology change them: the intrinsic descriptor of the ARG's whole-shape terms. Computed
 // on a copy whose short edges are collapsed to about 2000 vertices (the low eigenvalues barely
-// notice; it is 3 times faster). Empty when the eigen-solver does not converge or the mesh is
-// too small (fewer than 3 count vertices). Deterministic.
+// notice; it is 3 times faster). Empty when the eigen-solver does not converge or
+// the mesh is too small (fewer than 3 count vertices). Deterministic.
 std::vector<float> laplace_spectrum(const Mesh& mesh, int count = kSpectrumSize,
                                     const StopRequested& stop = {});
 

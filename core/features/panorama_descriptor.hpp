@@ -4,21 +4,13 @@
 #include <vector>
 
 #include "features/panoramic_views.hpp"
+#include "graph/whole_shape_layout.hpp"
 #include "mesh/mesh.hpp"
 
 namespace arg {
 
 inline constexpr int kPanoramaHeight = 64;      // N: views of 128 angles x 64 heights
 inline constexpr double kPanoramaRadius = 2.5;  // cylinder radius, in RMS radii of the surface
-inline constexpr int kPanoramaAngular = 16;     // frequencies 0..16 around the axis
-inline constexpr int kPanoramaAxial = 8;        // frequencies 0..8 along it
-inline constexpr int kPanoramaPerView = (kPanoramaAngular + 1) * (kPanoramaAxial + 1);
-inline constexpr int kPanoramaFourier = 6 * kPanoramaPerView;    // 918 values per frame
-inline constexpr int kPanoramaLevels = 5;                        // Haar levels: 64x128 to 2x4
-inline constexpr int kPanoramaBands = 3 * kPanoramaLevels + 1;   // detail bands and the rest
-inline constexpr int kPanoramaWavelet = 6 * kPanoramaBands * 2;  // 192 values per frame
-inline constexpr int kPanoramaPerFrame = kPanoramaFourier + kPanoramaWavelet;
-inline constexpr int kPanoramaSize = 2 * kPanoramaPerFrame;  // two frames: 2220 values
 
 // Per view, for u = 0..angular and v = 0..axial, (|F(v, u)| + |F(-v, u)|) / 2 / (N * 2N) of
 // the view's 2D discrete Fourier transform (v along the axis, u around it). A turn about the

@@ -1,5 +1,5 @@
 // Figures made of blended limbs: the four-legged animal, the standing human, the octopus.
-#include "gen/strict_fp.hpp"  // first: it sets how arithmetic is compiled
+#include "common/strict_fp.hpp"  // first: it sets how arithmetic is compiled
 
 #include <algorithm>
 #include <cmath>

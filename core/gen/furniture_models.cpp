@@ -1,5 +1,5 @@
 // Furniture from rounded slabs and legs: the table and the chair.
-#include "gen/strict_fp.hpp"  // first: it sets how arithmetic is compiled
+#include "common/strict_fp.hpp"  // first: it sets how arithmetic is compiled
 
 #include <cmath>
 #include <vector>

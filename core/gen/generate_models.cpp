@@ -1,5 +1,5 @@
 // The project's own deterministic model generator: closed manifold meshes in labelled classes.
-#include "gen/strict_fp.hpp"  // first: it sets how arithmetic is compiled
+#include "common/strict_fp.hpp"  // first: it sets how arithmetic is compiled
 
 #include "gen/generate_models.hpp"
 
@@ -83,10 +83,10 @@ GeneratedModel generate_model(const std::string& label, int variant, int resolut
     const Mesh& m = model.mesh;
     model.mesh.C.resize(m.F.rows(), 3);
     for (Eigen::Index t = 0; t < m.F.rows(); ++t) {
-      gen::Vec3 centroid;
+      Vec3 centroid;
       for (int c = 0; c < 3; ++c) {
         const auto v = m.F(t, c);
-        centroid = centroid + gen::Vec3{m.V(v, 0), m.V(v, 1), m.V(v, 2)};
+        centroid = centroid + Vec3{m.V(v, 0), m.V(v, 1), m.V(v, 2)};
       }
       const gen::Rgb rgb = blueprint.paint(centroid * (1.0 / 3.0));
       model.mesh.C(t, 0) = static_cast<float>(rgb.r);

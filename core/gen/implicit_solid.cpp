@@ -1,5 +1,5 @@
 // Solids given by signed distance fields (negative inside), their primitives and blends.
-#include "gen/strict_fp.hpp"  // first: it sets how arithmetic is compiled
+#include "common/strict_fp.hpp"  // first: it sets how arithmetic is compiled
 
 #include "gen/implicit_solid.hpp"
 

@@ -4,7 +4,7 @@
 #include <functional>
 #include <vector>
 
-#include "gen/vec3.hpp"
+#include "common/vec3.hpp"
 
 namespace arg::gen {
 

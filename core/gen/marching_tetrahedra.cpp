@@ -1,5 +1,5 @@
 // The generator's solids through the shared marching tetrahedra: grid placement and sampling.
-#include "gen/strict_fp.hpp"  // first: it sets how arithmetic is compiled
+#include "common/strict_fp.hpp"  // first: it sets how arithmetic is compiled
 
 #include "gen/marching_tetrahedra.hpp"
 

@@ -1,5 +1,5 @@
 // What each model class builds before polygonisation: the solid, how to paint it, what it is.
-#include "gen/strict_fp.hpp"  // first: it sets how arithmetic is compiled
+#include "common/strict_fp.hpp"  // first: it sets how arithmetic is compiled
 
 #include "gen/model_blueprints.hpp"
 

@@ -1,5 +1,5 @@
 // A seeded random rotation, scale and jitter of a mesh, for invariance and robustness tests.
-#include "gen/strict_fp.hpp"  // first: it sets how arithmetic is compiled
+#include "common/strict_fp.hpp"  // first: it sets how arithmetic is compiled
 
 #include "gen/perturb_mesh.hpp"
 
@@ -7,13 +7,11 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "common/vec3.hpp"
 #include "gen/seeded_random.hpp"
-#include "gen/vec3.hpp"
 
 namespace arg {
 namespace {
-
-using gen::Vec3;
 
 Vec3 row(const Mesh& m, Eigen::Index v) {
   return {m.V(v, 0), m.V(v, 1), m.V(v, 2)};

@@ -1,5 +1,5 @@
 // Sine and cosine from + - * / only, so angles give the same bits under every C library.
-#include "gen/strict_fp.hpp"  // first: it sets how arithmetic is compiled
+#include "common/strict_fp.hpp"  // first: it sets how arithmetic is compiled
 
 #include "gen/portable_math.hpp"
 

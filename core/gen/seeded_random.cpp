@@ -1,5 +1,5 @@
 // A seeded random stream whose doubles are the same on every platform.
-#include "gen/strict_fp.hpp"  // first: it sets how arithmetic is compiled
+#include "common/strict_fp.hpp"  // first: it sets how arithmetic is compiled
 
 #include "gen/seeded_random.hpp"
 

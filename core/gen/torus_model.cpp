@@ -1,5 +1,5 @@
 // The ring: a torus whose ring, tube and section vary by variant.
-#include "gen/strict_fp.hpp"  // first: it sets how arithmetic is compiled
+#include "common/strict_fp.hpp"  // first: it sets how arithmetic is compiled
 
 #include <cmath>
 

@@ -1,5 +1,5 @@
 // Vessels turned about the vertical axis: the vase, the cup with one handle, the amphora with two.
-#include "gen/strict_fp.hpp"  // first: it sets how arithmetic is compiled
+#include "common/strict_fp.hpp"  // first: it sets how arithmetic is compiled
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "pipeline/build_options.hpp"
+#include "common/build_options.hpp"
 
 namespace arg {
 
@@ -43,7 +43,7 @@ struct ArgNode {
 // its watertight proxy. Wide open: its boundary is longer than 4 sqrt(area) (a sheet, or
 // openings far larger than a scan's holes), so its spectrum is not the closed shape's.
 // Pooled: the graph held more nodes than a level may keep, and its smallest connected
-// components were pooled into one (graph/pool_fragments.hpp).
+// components were pooled into one (pipeline/pool_fragments.hpp).
 inline constexpr std::uint16_t kFlagOpen = 1, kFlagProxy = 2, kFlagWideOpen = 4, kFlagPooled = 8;
 
 struct ArgSummary {
@@ -71,8 +71,8 @@ struct ArgGraph {
   std::vector<std::uint32_t> children;      // CSR targets of ArgNode::child_begin/count
   std::vector<std::uint32_t> adjacency;     // CSR targets of ArgNode::adj_begin/count
   // Whole-shape descriptors that SIM weighs beside the graph (empty in format-1 values):
-  std::vector<float> panorama;  // kPanoramaSize values (features/panorama_descriptor.hpp)
-  std::vector<float> spectrum;  // kSpectrumSize values (features/laplace_spectrum.hpp)
+  std::vector<float> panorama;  // kPanoramaSize values (graph/whole_shape_layout.hpp)
+  std::vector<float> spectrum;  // kSpectrumSize values (graph/whole_shape_layout.hpp)
 
   int levels() const { return options.levels; }
 };

@@ -5,7 +5,7 @@
 #include <cstddef>
 
 #include "common/byte_io.hpp"
-#include "features/panorama_descriptor.hpp"
+#include "graph/whole_shape_layout.hpp"
 
 namespace arg {
 

@@ -10,12 +10,11 @@
 #include "common/byte_io.hpp"
 #include "common/errors.hpp"
 #include "common/hash.hpp"
-#include "features/laplace_spectrum.hpp"
-#include "features/panorama_descriptor.hpp"
 #include "graph/compact_nodes.hpp"
+#include "graph/node_bound.hpp"
 #include "graph/panorama_codes.hpp"
-#include "graph/pool_fragments.hpp"
 #include "graph/quantise.hpp"
+#include "graph/whole_shape_layout.hpp"
 
 namespace arg {
 

@@ -1,5 +1,5 @@
 // Writing a mesh to bytes in the common exchange formats, deterministically.
-#include "gen/strict_fp.hpp"  // first: STL normals must not depend on FMA contraction
+#include "common/strict_fp.hpp"  // first: STL normals must not depend on FMA contraction
 
 #include "io/write_mesh.hpp"
 

@@ -1,5 +1,5 @@
 // Collapsing short edges, topology kept: slivers of marching, coarser copies for the spectrum.
-#include "gen/strict_fp.hpp"  // first: it sets how arithmetic is compiled
+#include "common/strict_fp.hpp"  // first: it sets how arithmetic is compiled
 
 #include "mesh/collapse_short_edges.hpp"
 
@@ -8,12 +8,10 @@
 #include <tuple>
 #include <vector>
 
-#include "gen/vec3.hpp"
+#include "common/vec3.hpp"
 
 namespace arg {
 namespace {
-
-using gen::Vec3;
 
 struct Work {
   std::vector<Vec3> V;

@@ -14,7 +14,7 @@
 // leaving one tetrahedron corner, and those edges are linearly independent; in a quad any three
 // corners have two on one face of the tetrahedron and the third off that face's plane. So no
 // three corners are collinear. Clamping moves a vertex by at most kEdgeMargin of a cell.
-#include "gen/strict_fp.hpp"  // first: the generator needs the same bits on every target
+#include "common/strict_fp.hpp"  // first: the generator needs the same bits on every target
 
 #include "mesh/marching_tetrahedra.hpp"
 

@@ -3,10 +3,10 @@
 
 #include <vector>
 
+#include "common/build_options.hpp"
 #include "common/limits.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/mesh_edges.hpp"
-#include "pipeline/build_options.hpp"
 
 namespace arg {
 

@@ -4,11 +4,11 @@
 #include <string>
 #include <string_view>
 
+#include "common/build_options.hpp"
 #include "common/limits.hpp"
 #include "graph/arg_graph.hpp"
 #include "io/read_mesh.hpp"
 #include "mesh/mesh.hpp"
-#include "pipeline/build_options.hpp"
 
 namespace arg {
 

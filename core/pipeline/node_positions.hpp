@@ -5,9 +5,9 @@
 #include <utility>
 #include <vector>
 
+#include "common/build_options.hpp"
 #include "common/limits.hpp"
 #include "mesh/mesh.hpp"
-#include "pipeline/build_options.hpp"
 
 namespace arg {
 

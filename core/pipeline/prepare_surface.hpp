@@ -4,12 +4,12 @@
 #include <cmath>
 #include <optional>
 
+#include "common/build_options.hpp"
 #include "common/limits.hpp"
 #include "mesh/clean_mesh.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/mesh_edges.hpp"
 #include "mesh/normalize_pose.hpp"
-#include "pipeline/build_options.hpp"
 
 namespace arg {
 

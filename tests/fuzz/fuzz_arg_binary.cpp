@@ -7,10 +7,10 @@
 #include "fuzz_support.hpp"
 #include "gen/generate_models.hpp"
 #include "graph/comparable.hpp"
-#include "graph/search_descriptor.hpp"
 #include "graph/serialize.hpp"
 #include "match/similarity.hpp"
 #include "pipeline/build_arg.hpp"
+#include "search/search_descriptor.hpp"
 
 namespace arg::fuzz {
 

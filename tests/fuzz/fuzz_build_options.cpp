@@ -1,6 +1,6 @@
 // libFuzzer target: parse_build_options; accepted options are in range and survive formatting.
+#include "common/build_options.hpp"
 #include "fuzz_support.hpp"
-#include "pipeline/build_options.hpp"
 
 namespace arg::fuzz {
 

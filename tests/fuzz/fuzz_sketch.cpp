@@ -2,7 +2,7 @@
 #include <cmath>
 
 #include "fuzz_support.hpp"
-#include "graph/shape_sketch.hpp"
+#include "search/shape_sketch.hpp"
 
 namespace arg::fuzz {
 

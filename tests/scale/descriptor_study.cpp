@@ -7,7 +7,7 @@
 // the whole SIM would need the views and the spectrum as well): how often it is violated (it
 // held on every pair for 0.1.0's G; later matching rules break it on a few), how close it
 // comes, and how much an exact search by G could skip. And the second stage: recall@10 among
-// the C nearest by arg_sketch_distance (graph/shape_sketch.hpp), for graph mixes around the
+// the C nearest by arg_sketch_distance (search/shape_sketch.hpp), for graph mixes around the
 // shipped one. Exits 0 either way: a study, not a test.
 //
 //   tests/scale/descriptor_study.sh SET [MAX_MODELS [QUERIES]]   (SET: a .copy or labels.csv)
@@ -27,11 +27,11 @@
 #include <vector>
 
 #include "common/parallel_for.hpp"
-#include "graph/search_descriptor.hpp"
 #include "graph/serialize.hpp"
-#include "graph/shape_sketch.hpp"
 #include "match/mpair.hpp"
 #include "match/similarity.hpp"
+#include "search/search_descriptor.hpp"
+#include "search/shape_sketch.hpp"
 
 namespace {
 

@@ -19,9 +19,9 @@
 #include <vector>
 
 #include "common/parallel_for.hpp"
-#include "graph/search_descriptor.hpp"
 #include "graph/serialize.hpp"
 #include "match/similarity.hpp"
+#include "search/search_descriptor.hpp"
 
 namespace {
 

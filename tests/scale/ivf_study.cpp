@@ -1,4 +1,4 @@
-// How much of SIM's ten nearest an arg_ivf search finds: the cells of graph/sketch_cells.hpp
+// How much of SIM's ten nearest an arg_ivf search finds: the cells of search/sketch_cells.hpp
 // (centres from a sample of 20 a cell, as the index's build takes them), the probed cells' rows
 // ranked by sketch distance, and the recall of SIM's ten nearest among the first S of them, for
 // cell counts around the default (the square root of the rows) and probe counts; with the
@@ -22,8 +22,8 @@
 #include "common/parallel_for.hpp"
 #include "common/random.hpp"
 #include "graph/serialize.hpp"
-#include "graph/sketch_cells.hpp"
 #include "match/similarity.hpp"
+#include "search/sketch_cells.hpp"
 
 namespace {
 

@@ -1,9 +1,9 @@
 // Build options: every listed key parses over its whole range, and nothing else does.
 #include <gtest/gtest.h>
 
+#include "common/build_options.hpp"
 #include "common/errors.hpp"
 #include "input_error.hpp"
-#include "pipeline/build_options.hpp"
 
 using namespace arg;
 

@@ -214,7 +214,7 @@ TEST(GeneratorMarching, AFieldZeroExactlyOnGridPointsStillGivesAClosedManifold) 
   // The plane z = 0 through whole layers of grid points, capped to a slab: every sample on
   // those layers is exactly zero and must be nudged to one side.
   gen::Solid slab{
-      [](const gen::Vec3& p) {
+      [](const Vec3& p) {
         return std::max({std::fabs(p.z) - 0.5, std::fabs(p.x) - 1.0, std::fabs(p.y) - 1.0});
       },
       {{-1, -1, -0.5}, {1, 1, 0.5}}};

@@ -4,10 +4,10 @@
 #include <array>
 #include <map>
 
+#include "common/build_options.hpp"
 #include "mesh/clean_mesh.hpp"
 #include "mesh/mesh_edges.hpp"
 #include "mu/mu_function.hpp"
-#include "pipeline/build_options.hpp"
 #include "test_shapes.hpp"
 
 namespace arg {

@@ -1,13 +1,13 @@
-// The node bound: a fragmented graph's smallest components pooled, its largest kept whole.
+// Pooling: a fragmented graph's smallest components pooled, its largest kept whole.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "common/errors.hpp"
-#include "graph/pool_fragments.hpp"
 #include "graph/serialize.hpp"
 #include "match/similarity.hpp"
 #include "pipeline/build_arg.hpp"
+#include "pipeline/pool_fragments.hpp"
 #include "test_shapes.hpp"
 
 namespace arg {
@@ -110,12 +110,6 @@ TEST(PoolFragments, EveryLevelEndsWithinTheBoundWithItsAreaKept) {
   EXPECT_EQ(back.summary.pooled, pooled);
   EXPECT_EQ(serialize_arg(back), bytes);
   EXPECT_EQ(arg_similarity(back, stored_form(g)), 0.0);
-}
-
-TEST(PoolFragments, TheBoundShrinksWithMoreLevels) {
-  EXPECT_EQ(max_nodes_per_level(5), 640u);
-  EXPECT_EQ(max_nodes_per_level(7), 480u);
-  EXPECT_GT(max_nodes_per_level(7), 1u << 7) << "room for the pool on the finest level";
 }
 
 TEST(PoolFragments, AScatterOfThousandsOfPartsBuildsUnderTheSizeBound) {

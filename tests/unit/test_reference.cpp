@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "common/build_options.hpp"
 #include "match/weights.hpp"
-#include "pipeline/build_options.hpp"
 #include "reference_doc.hpp"
 
 using namespace arg;

@@ -8,9 +8,9 @@
 #include "features/laplace_spectrum.hpp"
 #include "features/panorama_descriptor.hpp"
 #include "gen/generate_models.hpp"
-#include "graph/search_descriptor.hpp"
 #include "graph/serialize.hpp"
 #include "pipeline/build_arg.hpp"
+#include "search/search_descriptor.hpp"
 
 using namespace arg;
 

@@ -13,9 +13,9 @@
 #include "gen/generate_models.hpp"
 #include "graph/panorama_codes.hpp"
 #include "graph/serialize.hpp"
-#include "graph/shape_sketch.hpp"
 #include "match/similarity.hpp"
 #include "pipeline/build_arg.hpp"
+#include "search/shape_sketch.hpp"
 
 using namespace arg;
 

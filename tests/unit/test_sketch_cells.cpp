@@ -7,8 +7,8 @@
 #include "common/errors.hpp"
 #include "gen/generate_models.hpp"
 #include "graph/serialize.hpp"
-#include "graph/sketch_cells.hpp"
 #include "pipeline/build_arg.hpp"
+#include "search/sketch_cells.hpp"
 
 using namespace arg;
 

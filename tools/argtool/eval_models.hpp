@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "common/build_options.hpp"
 #include "graph/arg_graph.hpp"
-#include "pipeline/build_options.hpp"
 
 namespace argtool {
 

@@ -3,9 +3,9 @@
 
 #include <string>
 
+#include "common/build_options.hpp"
 #include "graph/arg_graph.hpp"
 #include "mesh/mesh.hpp"
-#include "pipeline/build_options.hpp"
 #include "pipeline/node_positions.hpp"
 
 namespace argtool {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "common/limits.hpp"
-#include "graph/shape_sketch.hpp"
+#include "search/shape_sketch.hpp"
 
 namespace arg {
 

@@ -1,5 +1,5 @@
 // Shape sketches: made from a graph, written, read strictly, compared.
-#include "graph/shape_sketch.hpp"
+#include "search/shape_sketch.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -6,11 +6,10 @@
 #include <string>
 #include <string_view>
 
-#include "features/laplace_spectrum.hpp"
-#include "features/panorama_descriptor.hpp"
 #include "graph/arg_graph.hpp"
-#include "graph/search_descriptor.hpp"
+#include "graph/whole_shape_layout.hpp"
 #include "match/weights.hpp"
+#include "search/search_descriptor.hpp"
 
 namespace arg {
 

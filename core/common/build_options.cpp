@@ -1,5 +1,5 @@
 // Parsing and printing the options of an ARG build.
-#include "pipeline/build_options.hpp"
+#include "common/build_options.hpp"
 
 #include <iterator>
 

@@ -1,10 +1,10 @@
-// A tiny 3-vector whose arithmetic is spelled out, so generated geometry rounds the same
-// everywhere.
+// A tiny 3-vector whose arithmetic is spelled out, so geometry made from it (generated models,
+// collapsed edges) rounds the same everywhere.
 #pragma once
 
 #include <cmath>
 
-namespace arg::gen {
+namespace arg {
 
 // Eigen may vectorise or reorder reductions depending on the target; the generator promises
 // bit-identical meshes, so it does its own arithmetic in a fixed order.
@@ -43,4 +43,4 @@ inline Vec3 lerp(Vec3 a, Vec3 b, double t) {
   return a + (b - a) * t;
 }
 
-}  // namespace arg::gen
+}  // namespace arg

@@ -1,6 +1,6 @@
 // Cells of an inverted-file index over sketches (k-means++ seeded centres, nearest-centre
 // filing, probing).
-#include "graph/sketch_cells.hpp"
+#include "search/sketch_cells.hpp"
 
 #include <algorithm>
 #include <numeric>

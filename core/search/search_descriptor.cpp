@@ -1,5 +1,5 @@
 // The first stage's descriptor: level sums, the panorama's lowest frequencies, the spectrum.
-#include "graph/search_descriptor.hpp"
+#include "search/search_descriptor.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
-// Included first by every generator source: no fused multiply-add, so the bits do not depend
-// on the target.
+// Included first by every source whose bits must not depend on the target (the generator, the
+// marching and edge collapse it shares with the build, written meshes): no fused multiply-add.
 #pragma once
 
 // Contracting a * b + c into one fused instruction rounds once instead of twice; compilers do
