@@ -34,7 +34,7 @@ set(ARG_METHOD_SOURCES
     features/panoramic_views.cpp features/shape_distributions.cpp
     match/child_halves.cpp match/match_prep.cpp match/mpair.cpp match/node_similarity.cpp
     match/packed_graph.cpp match/part_match.cpp match/sim_key.cpp match/similarity.cpp
-    match/similarity_terms.cpp match/subgraph.cpp match/weights.cpp
+    match/similarity_terms.cpp match/subgraph.cpp match/term_weights.cpp match/weights.cpp
     search/search_descriptor.cpp search/shape_sketch.cpp search/sketch_cells.cpp
     pipeline/build_arg.cpp pipeline/node_positions.cpp pipeline/pool_fragments.cpp
     pipeline/prepare_surface.cpp)
@@ -51,7 +51,7 @@ set(ARG_RENDER_SOURCES
 set(ARG_EVAL_SOURCES
     eval/baseline_descriptors.cpp eval/distance_matrix_file.cpp eval/label_file.cpp
     eval/perturbations.cpp eval/pr_plot.cpp eval/quadric_decimation.cpp eval/refine_faces.cpp
-    eval/retrieval_metrics.cpp eval/weight_search.cpp)
+    eval/retrieval_metrics.cpp eval/term_matrices.cpp eval/weight_search.cpp)
 # The plug-ins' sources, listed with their targets in CMakeLists.txt.
 set(ARG_PLUGIN_SOURCES oiio/oiio_decode_image.cpp oiio/write_png.cpp oiio/register_decoder.cpp
                        vdb/vdb_distance_field.cpp vdb/register_distance_field.cpp)

@@ -13,6 +13,7 @@
 #include "match/mpair.hpp"
 #include "match/node_similarity.hpp"
 #include "match/packed_graph.hpp"
+#include "match/term_weights.hpp"
 
 namespace arg {
 
@@ -133,29 +134,15 @@ SimilarityParts parts_in(const ArgGraph& a, const ArgGraph& b, const Weights& w,
                          std::vector<MatchPair>* matches, const MatchPrep* prep_a,
                          const MatchPrep* prep_b, std::optional<int> order) {
   SimilarityParts p;
-  // A proxy's graph is a shell's (weights.hpp): it counts its share graph_on_proxy.
-  const bool on_proxy = ((a.summary.flags | b.summary.flags) & kFlagProxy) != 0;
-  p.w_graph = on_proxy ? w.graph * w.graph_on_proxy : w.graph;
-  if (w.panorama > 0 && !a.panorama.empty() && !b.panorama.empty()) {
-    p.w_panorama = w.panorama;
-    p.panorama = panorama_distance(a.panorama, b.panorama);
-  }
-  // A proxy's spectrum is its shell's (gaps closed, near parts fused) and a wide-open
-  // surface's is that of its openings as much as of its shape, so, like colour without
-  // colour, the spectra then weigh nothing (such values are built without one anyway).
-  const bool own_surfaces = !((a.summary.flags | b.summary.flags) & (kFlagProxy | kFlagWideOpen));
-  if (w.spectrum > 0 && own_surfaces && !a.spectrum.empty() && !b.spectrum.empty()) {
-    p.w_spectrum = w.spectrum;
-    p.spectrum = spectrum_distance(a.spectrum, b.spectrum);
-  }
-  // Values without the whole-shape sections (format 1) fall back on the graph alone.
-  if (p.w_graph + p.w_panorama + p.w_spectrum <= 0) p.w_graph = 1;
-  if (p.w_graph > 0 || matches)
+  const TermWeights t =
+      term_weights(w, a.summary.flags | b.summary.flags, !a.panorama.empty() && !b.panorama.empty(),
+                   !a.spectrum.empty() && !b.spectrum.empty());
+  p.w_graph = t.graph, p.w_panorama = t.panorama, p.w_spectrum = t.spectrum;
+  if (t.panorama > 0) p.panorama = panorama_distance(a.panorama, b.panorama);
+  if (t.spectrum > 0) p.spectrum = spectrum_distance(a.spectrum, b.spectrum);
+  if (t.graph > 0 || matches)
     p.graph = graph_similarity_in(a, b, w, matches, prep_a, prep_b, order);
-  const double total = p.w_graph + p.w_panorama + p.w_spectrum;
-  p.sim = std::clamp(
-      (p.w_graph * p.graph + p.w_panorama * p.panorama + p.w_spectrum * p.spectrum) / total, 0.0,
-      1.0);
+  p.sim = std::clamp(mix_terms(t, p.graph, p.panorama, p.spectrum), 0.0, 1.0);
   return p;
 }
 

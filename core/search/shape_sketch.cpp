@@ -11,6 +11,7 @@
 #include "features/laplace_spectrum.hpp"
 #include "features/panorama_descriptor.hpp"
 #include "graph/panorama_codes.hpp"
+#include "match/term_weights.hpp"
 
 namespace arg {
 
@@ -118,27 +119,18 @@ std::string sketch_from_text(std::string_view text) {
 
 double sketch_distance(const ShapeSketch& a, const ShapeSketch& b, const Weights& w,
                        double graph_mix) {
-  // The terms and their weights as similarity.cpp's parts_in sets them.
-  const bool on_proxy = ((a.flags | b.flags) & kFlagProxy) != 0;
-  double w_graph = on_proxy ? double(w.graph) * w.graph_on_proxy : double(w.graph);
-  double w_panorama = 0, panorama = 0, w_spectrum = 0, spectrum = 0;
-  if (w.panorama > 0 && a.has_panorama && b.has_panorama) {
-    w_panorama = w.panorama;
-    panorama = panorama_distance(a.panorama.data(), b.panorama.data());
-  }
-  const bool own_surfaces = !((a.flags | b.flags) & (kFlagProxy | kFlagWideOpen));
-  if (w.spectrum > 0 && own_surfaces && a.has_spectrum && b.has_spectrum) {
-    w_spectrum = w.spectrum;
+  const TermWeights t = term_weights(w, a.flags | b.flags, a.has_panorama && b.has_panorama,
+                                     a.has_spectrum && b.has_spectrum);
+  double panorama = 0, spectrum = 0;
+  if (t.panorama > 0) panorama = panorama_distance(a.panorama.data(), b.panorama.data());
+  if (t.spectrum > 0)
     spectrum = spectrum_distance(a.spectrum.data(), b.spectrum.data(), a.spectrum.size());
-  }
-  if (w_graph + w_panorama + w_spectrum <= 0) w_graph = 1;
   // Colour weighs nothing in SIM unless both models have it (similarity_terms.hpp).
   const std::size_t end =
       a.has_colour && b.has_colour ? a.graph.size() : a.graph.size() - kColourValues;
   double l1 = 0;
   for (std::size_t k = 0; k < end; ++k) l1 += std::fabs(double(a.graph[k]) - b.graph[k]);
-  return (w_graph * graph_mix * l1 + w_panorama * panorama + w_spectrum * spectrum) /
-         (w_graph + w_panorama + w_spectrum);
+  return mix_terms(t, graph_mix * l1, panorama, spectrum);
 }
 
 }  // namespace arg

@@ -11,10 +11,9 @@
 #include "common/parallel_for.hpp"
 #include "eval/label_file.hpp"
 #include "eval/retrieval_metrics.hpp"
+#include "eval/term_matrices.hpp"
 #include "eval/weight_search.hpp"
 #include "eval_models.hpp"
-#include "features/laplace_spectrum.hpp"
-#include "features/panorama_descriptor.hpp"
 #include "load_arg.hpp"
 #include "match/similarity.hpp"
 #include "progress_bar.hpp"
@@ -38,7 +37,7 @@ struct Set {
   int copy_of = -1;  // a --proxy-copies set: the index of the set it copies
   arg::LabelSet labels;
   std::vector<argtool::Model> models;
-  std::vector<double> panorama, spectrum;  // n x n, in [0, 1]; spectrum -1: left out
+  arg::TermMatrices terms;  // the whole-shape terms of every pair, which weights only mix
 };
 
 // Graph SIM matrices of every set for one choice of the graph's own weights, kept between the
@@ -82,32 +81,26 @@ class GraphCache {
 // arg_similarity does.
 arg::RetrievalScores scores_within(const Set& s, const std::vector<int>& members,
                                    const arg::Weights& w, GraphCache& graphs, std::size_t index) {
-  const std::size_t n = members.size(), all = s.models.size();
+  const std::size_t n = members.size();
   std::vector<double> distance(n * n, 0.0);
   std::vector<int> label(n);
   std::vector<bool> valid(n);
-  // Without graph and panorama weights a pair of proxy models has nothing left but the graph,
-  // on which arg_similarity then falls back.
-  const bool need_graph = w.graph > 0 || w.panorama <= 0;
+  // The graph's SIMs are computed only when some pair gives the graph a weight.
+  bool need_graph = false;
+  for (std::size_t i = 0; i < n && !need_graph; ++i)
+    for (std::size_t j = 0; j < n && !need_graph; ++j)
+      need_graph = i != j && arg::pair_term_weights(s.terms, std::size_t(members[i]),
+                                                    std::size_t(members[j]), w)
+                                     .graph > 0;
   const std::vector<double>* g = need_graph ? &graphs.get(index, members, w) : nullptr;
-  auto on_proxy = [&](std::size_t m) {
-    return (s.models[m].graph.summary.flags & arg::kFlagProxy) != 0;
-  };
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t mi = std::size_t(members[i]);
     label[i] = s.labels.class_of[mi];
     valid[i] = s.models[mi].error.empty();
     for (std::size_t j = 0; j < n; ++j) {
       if (i == j) continue;
-      const std::size_t mj = std::size_t(members[j]);
-      const double spectrum = s.spectrum[mi * all + mj];
-      const double w_spectrum = spectrum < 0 ? 0.0 : double(w.spectrum);
-      const double w_graph =
-          on_proxy(mi) || on_proxy(mj) ? double(w.graph) * w.graph_on_proxy : double(w.graph);
-      double d = w.panorama * s.panorama[mi * all + mj] + w_spectrum * std::max(spectrum, 0.0);
-      if (g) d += w_graph * (*g)[i * n + j];
-      const double total = w_graph + w.panorama + w_spectrum;
-      distance[i * n + j] = total > 0 ? d / total : (*g)[i * n + j];
+      distance[i * n + j] =
+          arg::mixed_similarity(s.terms, mi, std::size_t(members[j]), w, g ? (*g)[i * n + j] : 0.0);
     }
   }
   return arg::retrieval_scores(distance, label, int(s.labels.classes.size()), valid);
@@ -187,21 +180,10 @@ const bool registered = argtool::register_command(
                 argtool::prepare_model(s.models[i], (root / s.labels.models[i].path).string(),
                                        options, a->cache, true);
               });
-          const std::size_t n = s.models.size();
-          s.panorama.assign(n * n, 1.0), s.spectrum.assign(n * n, 1.0);
-          for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t j = 0; j < n; ++j) {
-              const auto &x = s.models[i].graph, &y = s.models[j].graph;
-              if (i == j) {
-                s.panorama[i * n + j] = s.spectrum[i * n + j] = 0;
-              } else if (s.models[i].error.empty() && s.models[j].error.empty()) {
-                s.panorama[i * n + j] = arg::panorama_distance(x.panorama, y.panorama);
-                // As arg_similarity: no spectrum term when either model lacks one.
-                s.spectrum[i * n + j] = x.spectrum.empty() || y.spectrum.empty()
-                                            ? -1.0
-                                            : arg::spectrum_distance(x.spectrum, y.spectrum);
-              }
-            }
+          std::vector<const arg::ArgGraph*> built(s.models.size(), nullptr);
+          for (std::size_t i = 0; i < s.models.size(); ++i)
+            if (s.models[i].error.empty()) built[i] = &s.models[i].graph;
+          s.terms = arg::term_matrices(built);
         }
         GraphCache graphs(sets, a->threads);
         const arg::Weights start = arg::parse_weights(a->start);

@@ -1,0 +1,25 @@
+// How SIM mixes its three terms.
+#include "match/term_weights.hpp"
+
+#include "graph/arg_graph.hpp"
+
+namespace arg {
+
+TermWeights term_weights(const Weights& w, std::uint16_t flags, bool panoramas, bool spectra) {
+  TermWeights t;
+  // In float, as SIM has always computed the proxy's share: the distance matrices stay as they
+  // were to the bit.
+  t.graph = (flags & kFlagProxy) != 0 ? w.graph * w.graph_on_proxy : w.graph;
+  if (w.panorama > 0 && panoramas) t.panorama = w.panorama;
+  const bool own_surfaces = (flags & (kFlagProxy | kFlagWideOpen)) == 0;
+  if (w.spectrum > 0 && own_surfaces && spectra) t.spectrum = w.spectrum;
+  if (t.graph + t.panorama + t.spectrum <= 0) t.graph = 1;
+  return t;
+}
+
+double mix_terms(const TermWeights& t, double graph, double panorama, double spectrum) {
+  return (t.graph * graph + t.panorama * panorama + t.spectrum * spectrum) /
+         (t.graph + t.panorama + t.spectrum);
+}
+
+}  // namespace arg
