@@ -16,8 +16,6 @@ namespace argpg {
 
 namespace {
 
-constexpr std::size_t kDigestAt = 16, kDigestSize = 8;  // where the binary form keeps its digest
-
 struct ToastKey {
   Oid relation = InvalidOid;  // InvalidOid: the value did not come as an on-disk toast pointer
   Oid value = InvalidOid;
@@ -54,8 +52,8 @@ ToastKey toast_key(Datum raw) {
 
 std::uint64_t raw_digest(std::string_view bytes) {
   std::uint64_t digest = 0;
-  if (bytes.size() >= kDigestAt + kDigestSize)
-    std::memcpy(&digest, bytes.data() + kDigestAt, kDigestSize);
+  if (bytes.size() >= arg::kDigestOffset + arg::kDigestSize)
+    std::memcpy(&digest, bytes.data() + arg::kDigestOffset, arg::kDigestSize);
   return digest;
 }
 

@@ -5,6 +5,7 @@
 // <~> for that) sorts by digest, then size, then bytes, so most comparisons never detoast a
 // whole value.
 #include "arg_bridge.hpp"
+#include "graph/serialize.hpp"
 
 extern "C" {
 #include "access/detoast.h"
@@ -13,7 +14,7 @@ extern "C" {
 
 namespace {
 
-constexpr int32 kDigestAt = 16, kDigestSize = 8;
+constexpr int32 kDigestAt = int32(arg::kDigestOffset), kDigestSize = int32(arg::kDigestSize);
 
 // The stored digest's bytes (only those are detoasted), or fewer if the value is shorter.
 varlena* digest_slice(Datum value) {

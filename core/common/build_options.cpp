@@ -25,16 +25,18 @@ struct Option {
   void (*choose)(BuildOptions&, int);
 };
 constexpr Option kOptions[] = {
-    {"levels", &BuildOptions::levels, 1, kMaxLevels, nullptr, 0, nullptr},
+    {"levels", &BuildOptions::levels, kMinLevels, kMaxLevels, nullptr, 0, nullptr},
     {"mu", nullptr, 0, 0, kMuNames, int(std::size(kMuNames)),
      [](BuildOptions& o, int i) { o.mu = MuKind(i); }},
-    {"base_points", &BuildOptions::base_points, 8, 4096, nullptr, 0, nullptr},
+    {"base_points", &BuildOptions::base_points, kMinBasePoints, kMaxBasePoints, nullptr, 0,
+     nullptr},
     {"surface", nullptr, 0, 0, kSurfaceNames, int(std::size(kSurfaceNames)),
      [](BuildOptions& o, int i) { o.surface = SurfaceKind(i); }},
-    {"proxy_resolution", &BuildOptions::proxy_resolution, 16, 256, nullptr, 0, nullptr},
+    {"proxy_resolution", &BuildOptions::proxy_resolution, kMinProxyResolution, kMaxProxyResolution,
+     nullptr, 0, nullptr},
     {"holes", nullptr, 0, 0, kHoleNames, int(std::size(kHoleNames)),
      [](BuildOptions& o, int i) { o.holes = HoleKind(i); }},
-    {"threads", &BuildOptions::threads, 1, 256, nullptr, 0, nullptr},
+    {"threads", &BuildOptions::threads, 1, kMaxThreads, nullptr, 0, nullptr},
 };
 
 // "a, b or c"

@@ -30,7 +30,11 @@ struct BuildOptions {
   int threads = 1;  // worker threads for mu; never changes the result
 };
 
-inline constexpr int kMaxLevels = 7;
+// Each number's range: the text parser and the binary format's reader both hold values to it.
+inline constexpr int kMinLevels = 1, kMaxLevels = 7;
+inline constexpr int kMinBasePoints = 8, kMaxBasePoints = 4096;
+inline constexpr int kMinProxyResolution = 16, kMaxProxyResolution = 256;
+inline constexpr int kMaxThreads = 256;
 
 // One key of the build options text. The parser finds keys in the same table as this list, so a
 // key it accepts cannot be missing from it (tests/unit/test_reference.cpp holds

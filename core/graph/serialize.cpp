@@ -28,7 +28,6 @@ constexpr std::size_t kHeaderSize1 =
 constexpr std::size_t kHeaderSize2 = kHeaderSize1 + 4;
 // Format 3 adds the number of pooled components (2 bytes, 2 reserved).
 constexpr std::size_t kHeaderSize3 = kHeaderSize2 + 4;
-constexpr std::size_t kDigestAt = 16, kDigestEnd = 24;  // the digest covers every other byte
 constexpr std::size_t kNodeSize =
     2 + 2 + 4 * 5 + 4 * 8 + 4 * (kCordBins + 2 * kCurvatureBins + 3 * kColourBins);
 constexpr std::uint32_t kMaxNodes = 1u << 20;
@@ -64,7 +63,8 @@ void for_each_field(Node& n, F&& f) {
 
 // FNV-1a over every byte but the digest's own eight.
 std::uint64_t content_digest(std::string_view bytes) {
-  return fnv1a_64(bytes.substr(kDigestEnd), fnv1a_64(bytes.substr(0, kDigestAt)));
+  return fnv1a_64(bytes.substr(kDigestOffset + kDigestSize),
+                  fnv1a_64(bytes.substr(0, kDigestOffset)));
 }
 
 struct Header {
@@ -109,9 +109,9 @@ Header read_header(ByteReader& in, std::string_view bytes, ArgGraph& g, bool che
   h.levels = in.get<std::uint8_t>();
   h.mu_kind = in.get<std::uint8_t>();
   h.base_points = in.get<std::uint16_t>();
-  if (h.levels < 1 || h.levels > kMaxLevels) in.fail("levels " + std::to_string(h.levels));
+  if (h.levels < kMinLevels || h.levels > kMaxLevels) in.fail("levels " + std::to_string(h.levels));
   if (h.mu_kind > 2) in.fail("mu kind " + std::to_string(h.mu_kind));
-  if (h.base_points < 8 || h.base_points > 4096)
+  if (h.base_points < kMinBasePoints || h.base_points > kMaxBasePoints)
     in.fail("base points " + std::to_string(h.base_points));
   h.node_count = in.get<std::uint32_t>();
   h.child_count = in.get<std::uint32_t>();
@@ -169,7 +169,8 @@ Header read_header(ByteReader& in, std::string_view bytes, ArgGraph& g, bool che
     g.options.surface = SurfaceKind(surface);
     g.options.holes = HoleKind(holes);
     g.options.proxy_resolution = in.get<std::uint16_t>();
-    if (g.options.proxy_resolution < 16 || g.options.proxy_resolution > 256)
+    if (g.options.proxy_resolution < kMinProxyResolution ||
+        g.options.proxy_resolution > kMaxProxyResolution)
       in.fail("proxy resolution " + std::to_string(g.options.proxy_resolution));
   }
   if (h.version >= 3) {
@@ -451,7 +452,7 @@ std::string serialize_arg(const ArgGraph& g) {
   bytes.replace(8, 4, size.bytes());
   ByteWriter digest;
   digest.put(content_digest(bytes));
-  bytes.replace(kDigestAt, 8, digest.bytes());
+  bytes.replace(kDigestOffset, kDigestSize, digest.bytes());
   return std::move(bytes);
 }
 
@@ -557,8 +558,8 @@ void validate_arg_bytes(std::string_view bytes) {
 }
 
 std::uint64_t arg_digest(std::string_view bytes) {
-  if (bytes.size() < kDigestEnd) fail("value too short for a digest");
-  ByteReader in(bytes.substr(kDigestAt, 8), "ARG");
+  if (bytes.size() < kDigestOffset + kDigestSize) fail("value too short for a digest");
+  ByteReader in(bytes.substr(kDigestOffset, kDigestSize), "ARG");
   return in.get<std::uint64_t>();
 }
 
@@ -566,7 +567,7 @@ void reseal_arg_digest(std::string& bytes) {
   if (bytes.size() < kHeaderSize1) fail("value too short for a header");
   ByteWriter digest;
   digest.put(content_digest(bytes));
-  bytes.replace(kDigestAt, 8, digest.bytes());
+  bytes.replace(kDigestOffset, kDigestSize, digest.bytes());
 }
 
 std::string arg_to_text(std::string_view bytes) {

@@ -15,6 +15,10 @@ struct CompactRecords;  // graph/compact_nodes.hpp
 // float sections) and 3 (byte-coded records and sections, colour only when there is colour).
 inline constexpr std::uint16_t kFormatVersion = 3;
 
+// Where every format keeps its 64-bit content digest (FNV-1a of every other byte): a reader
+// that needs only the digest (hashing, the canonical order, a cache's key) reads these bytes.
+inline constexpr std::size_t kDigestOffset = 16, kDigestSize = 8;
+
 // Little-endian bytes: header (magic, versions, options, counts, summary, global descriptor,
 // surface options, in format 3 the pooled components), then the nodes and their links, then
 // tagged sections (the spectrum, the panorama, in format 3 the colour). Written in

@@ -81,8 +81,9 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
                    BuildReport* report) {
   BuildReport local;
   BuildReport& rep = report ? *report : local;
-  if (options.levels < 1 || options.levels > kMaxLevels)
-    throw InputError("build options: levels must be in [1, " + std::to_string(kMaxLevels) + "]");
+  if (options.levels < kMinLevels || options.levels > kMaxLevels)
+    throw InputError("build options: levels must be in [" + std::to_string(kMinLevels) + ", " +
+                     std::to_string(kMaxLevels) + "]");
   Stopwatch clock;
 
   const PreparedSurface prepared = prepare_surface(input, options, stop);

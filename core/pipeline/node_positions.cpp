@@ -14,8 +14,9 @@ namespace arg {
 
 NodePositions node_positions(const Mesh& input, const BuildOptions& options,
                              const StopRequested& stop) {
-  if (options.levels < 1 || options.levels > kMaxLevels)
-    throw InputError("build options: levels must be in [1, " + std::to_string(kMaxLevels) + "]");
+  if (options.levels < kMinLevels || options.levels > kMaxLevels)
+    throw InputError("build options: levels must be in [" + std::to_string(kMinLevels) + ", " +
+                     std::to_string(kMaxLevels) + "]");
   NodePositions out;
   PreparedSurface prepared = prepare_surface(input, options, stop);
   out.mesh = prepared.proxy ? std::move(*prepared.proxy) : std::move(prepared.posed);

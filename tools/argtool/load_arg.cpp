@@ -29,7 +29,7 @@ LoadedArg load_arg(const std::string& path, const arg::BuildOptions& options,
 
 void add_build_flags(CLI::App& app, arg::BuildOptions& options, bool with_threads) {
   app.add_option("--levels", options.levels, "finest level n (2^n intervals of mu)")
-      ->check(CLI::Range(1, arg::kMaxLevels));
+      ->check(CLI::Range(arg::kMinLevels, arg::kMaxLevels));
   app.add_option_function<std::string>(
          "--mu",
          [&options](const std::string& kind) {
@@ -38,7 +38,7 @@ void add_build_flags(CLI::App& app, arg::BuildOptions& options, bool with_thread
          "geodesic (default), height or centroid")
       ->check(CLI::IsMember({"geodesic", "height", "centroid"}));
   app.add_option("--base-points", options.base_points, "base points of the geodesic integral")
-      ->check(CLI::Range(8, 4096));
+      ->check(CLI::Range(arg::kMinBasePoints, arg::kMaxBasePoints));
   app.add_option_function<std::string>(
       "--build-options",
       [&options](const std::string& text) {
@@ -47,7 +47,7 @@ void add_build_flags(CLI::App& app, arg::BuildOptions& options, bool with_thread
       "further build options as key=value text (surface=proxy proxy_resolution=64 ...)");
   if (!with_threads) return;
   app.add_option("--threads", options.threads, "threads for mu (never changes the result)")
-      ->check(CLI::Range(1, 256));
+      ->check(CLI::Range(1, arg::kMaxThreads));
 }
 
 }  // namespace argtool
