@@ -15,7 +15,7 @@ namespace arg {
 // surface's metric, so bending (a new pose) leaves them nearly as they are, while proportions
 // and topology change them: the intrinsic descriptor of the ARG's whole-shape terms. Computed
 // on a copy whose short edges are collapsed to about 2000 vertices (the low eigenvalues barely
-// notice; it is 3 times faster). Empty when the eigen-solver does not converge or
+// notice, and the solve is several times cheaper). Empty when the eigen-solver does not converge or
 // the mesh is too small (fewer than 3 count vertices). Deterministic.
 std::vector<float> laplace_spectrum(const Mesh& mesh, int count = kSpectrumSize,
                                     const StopRequested& stop = {});

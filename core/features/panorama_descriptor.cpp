@@ -122,7 +122,7 @@ double panorama_distance(const float* a, const float* b) {
     const std::size_t begin = f * kPanoramaPerFrame, wavelet = begin + kPanoramaFourier,
                       end = begin + kPanoramaPerFrame;
     // Four running sums, added up at the end: independent sums let the compiler use vector
-    // instructions (one sum is a chain of dependent additions); a fifth of a comparison.
+    // instructions (one sum is a chain of dependent additions).
     auto four_lanes = [](std::size_t from, std::size_t to, auto&& term) {
       double part[4] = {0, 0, 0, 0};
       std::size_t k = from;

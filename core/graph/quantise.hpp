@@ -14,14 +14,13 @@ namespace arg {
 
 // Every codec is exact on its own output: quantising a decoded value gives back the same code,
 // so a value read and written again keeps its bytes (test_quantise.cpp checks every code).
-// The decoders are defined here, inline: they run on every node of every row a query ranks,
-// and as calls into another file they were a tenth of a ranking.
+// The decoders are defined here, inline: they run on every node of every row a query ranks
+// (docs/BENCHMARKS.md, "ARG values", has what each choice below saved).
 
 // [0, 1] in 65,535 steps (areas, lengths, volumes): 1.5e-5, far below what SIM resolves.
 std::uint16_t quantise_unit16(float x);
-// float(q / 65535.0), multiplied rather than divided (three a node on every row of a ranking,
-// and a division was a tenth of reading a row): the same float for every code, which
-// test_quantise.cpp checks code by code.
+// float(q / 65535.0), multiplied rather than divided (three a node on every row of a ranking):
+// the same float for every code, which test_quantise.cpp checks code by code.
 inline float unit16_value(std::uint16_t q) {
   return float(q * (1.0 / 65535.0));
 }
@@ -58,7 +57,7 @@ const std::array<float, 256>& code_squares();
 inline void sqrt_block_values(const std::uint8_t* q, std::size_t count, float scale, float* out) {
   const float* squares = code_squares().data();
   std::size_t k = 0;
-  for (; k + 4 <= count; k += 4) {  // four at a time: the loop's own count was half its work
+  for (; k + 4 <= count; k += 4) {  // four at a time: fewer loop counts for the same work
     const float x0 = squares[q[k]], x1 = squares[q[k + 1]], x2 = squares[q[k + 2]],
                 x3 = squares[q[k + 3]];
     out[k] = scale * x0, out[k + 1] = scale * x1, out[k + 2] = scale * x2, out[k + 3] = scale * x3;
@@ -75,8 +74,8 @@ inline bool canonical_bins(const std::uint8_t* q, std::size_t count, std::uint16
   return total_code == 0 ? sum == 0 : sum <= 255;
 }
 // canonical_bins of three histograms of eight codes side by side (a node record's cords and
-// curvatures), under one total: read on every node of every row a ranking reads, where three
-// byte loops were a quarter of checking a record. SSE2's psadbw sums eight bytes at once.
+// curvatures), under one total: read on every node of every row a ranking reads. SSE2's
+// psadbw sums eight bytes at once.
 inline bool canonical_bins_3x8(const std::uint8_t* q, std::uint16_t total_code) {
 #if defined(__SSE2__)
   const __m128i zero = _mm_setzero_si128();
@@ -93,7 +92,7 @@ inline bool canonical_bins_3x8(const std::uint8_t* q, std::uint16_t total_code) 
 #endif
 }
 inline bool canonical_sqrt_block(const std::uint8_t* q, std::size_t count, float scale) {
-  // memchr is vectorised: a byte loop was most of reading a panorama, on every row ranked.
+  // memchr is vectorised; a panorama is read on every row ranked.
   if (scale != 0) return scale >= kMinBlockScale && std::memchr(q, 255, count) != nullptr;
   for (std::size_t k = 0; k < count; ++k)
     if (q[k] != 0) return false;

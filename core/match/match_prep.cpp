@@ -111,8 +111,8 @@ std::uint32_t descending(float x) {
 
 // Sorts keys by their upper 32 bits, keeping the order of equal ones, with room for n more at
 // `spare`: an LSD radix sort, a byte a pass, passes where every key has the same byte skipped.
-// A comparison sort's branches on keys in no order are mostly mispredicted: ordering a shrec07
-// row's 221 nodes took 5.3 us with std::sort, 4.4 us with a branch-free merge sort, 3.4 us so.
+// A comparison sort's branches on keys in no order are mostly mispredicted; a radix sort has
+// none to mispredict (docs/BENCHMARKS.md, "ARG values", compares the three sorts tried).
 void sort_by_upper_half(OrderKey* keys, std::size_t n, OrderKey* spare) {
   if (n <= 32) {  // insertion sort: few enough comparisons
     for (std::size_t i = 1; i < n; ++i) {

@@ -28,10 +28,10 @@ inline std::size_t interval_offset(int r) {
   return (std::size_t(1) << r) - 1 + std::size_t(r);
 }
 
-// What match_graphs would otherwise work out from one graph at every comparison (a quarter of
-// a comparison's instructions on SHREC 2007): a ranking prepares its query once, an evaluation
-// each model once. Holds no pointer into the graph, so it may be kept beside it, but it
-// describes the graph as it was when prepared: prepare again after the graph changes.
+// What match_graphs would otherwise work out from one graph at every comparison: a ranking prepares
+// its query once, an evaluation each model once. Holds no pointer into the graph, so it may be kept
+// beside it, but it describes the graph as it was when prepared: prepare again after the graph
+// changes.
 struct MatchPrep {
   // Self sims (sim(m, m)) with one colour weight; lambda_4 counts only when both graphs have
   // colour, so a coloured graph needs both.

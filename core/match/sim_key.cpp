@@ -45,8 +45,8 @@ double codes_min(const std::uint8_t* x, float sx, const std::uint8_t* y, float s
 #if defined(__SSE2__)
   // The same sums four codes at a time (every x86-64 has SSE2): lane q of the two double
   // pairs is part[q] below, each float product, minimum and double sum the same IEEE
-  // operation, so the bits are those of the loop (test_sim_key.cpp checks them). The loop
-  // was a tenth of a ranking's instructions.
+  // operation, so the bits are those of the loop (test_sim_key.cpp checks them). It runs on
+  // every pair of nodes a ranking compares.
   const __m128i zero = _mm_setzero_si128();
   const __m128 vx = _mm_set1_ps(sx), vy = _mm_set1_ps(sy);
   __m128d lo = _mm_setzero_pd(), hi = _mm_setzero_pd();  // part[0..1], part[2..3]

@@ -15,8 +15,8 @@ void shortest_paths(const SurfaceGraph& graph, const std::vector<int>& sources,
                     std::vector<float>& distance, std::vector<int>* nearest = nullptr,
                     const StopRequested& stop = {});
 
-// The same distances computed on edge lengths rounded to `unit` (Dial's bucket queue): far
-// faster, and the rounding (at most unit / 2 per edge, unbiased) is negligible for mu, an
+// The same distances computed on edge lengths rounded to `unit` (Dial's bucket queue): no
+// heap, and the rounding (at most unit / 2 per edge, unbiased) is negligible for mu, an
 // integral over many paths. `buckets` is scratch space reused between calls.
 struct BucketScratch {
   std::vector<std::vector<int>> buckets;
