@@ -4,7 +4,9 @@
 // per model, "id <TAB> museum <TAB> period <TAB> class <TAB> arg" in COPY's text format (the
 // arg in its text form, arg1: and base64), in id order whatever the thread count. Models come
 // from the generator (the 9 classes in turn, each variant turned, scaled and jittered by
-// perturb_mesh) or, with --labels, from a labelled set such as SHREC 2007. Museum (M1..M<n>)
+// perturb_mesh) or, with --labels, from a labelled set such as SHREC 2007, or, with
+// --jitter-from, as jittered copies of the values of earlier rows (eval/value_jitter.hpp: a
+// million rows in minutes, for the index benchmarks). Museum (M1..M<n>)
 // and period are drawn per row from a stream seeded by --seed and the id, so a filter such as
 // museum = 'M7' keeps about 1/n of the rows. The same arguments give the same bytes.
 #include <algorithm>
@@ -22,6 +24,7 @@
 #include "command_registry.hpp"
 #include "common/parallel_for.hpp"
 #include "eval/label_file.hpp"
+#include "eval/value_jitter.hpp"
 #include "eval_models.hpp"
 #include "gen/generate_models.hpp"
 #include "gen/perturb_mesh.hpp"
@@ -36,8 +39,10 @@ namespace fs = std::filesystem;
 
 struct ScaleArgs {
   std::string out;
-  std::string labels;  // a labelled set instead of generated models
-  std::string cache;   // ARG cache folder for --labels (shared with argtool eval)
+  std::string labels;       // a labelled set instead of generated models
+  std::string cache;        // ARG cache folder for --labels (shared with argtool eval)
+  std::string jitter_from;  // COPY rows whose values are copied with jitter instead
+  double value_jitter = 0.05;
   long long count = 1000;
   long long first_id = 1;
   int resolution = 16;
@@ -74,6 +79,41 @@ std::string generated_row(const ScaleArgs& a, const std::vector<std::string>& cl
   return metadata(a, a.first_id + i) + label + '\t' + arg::arg_to_text(bytes) + '\n';
 }
 
+// The class and value of each row of a file written by scale-gen.
+struct PoolRow {
+  std::string label;
+  arg::ArgGraph graph;
+};
+std::vector<PoolRow> read_pool(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::vector<PoolRow> pool;
+  std::string line;
+  while (std::getline(in, line)) {
+    // id, museum, period, class, arg
+    std::size_t at = 0;
+    for (int field = 0; field < 3; ++field) at = line.find('\t', at) + 1;
+    const std::size_t end = line.find('\t', at);
+    if (at == 0 || end == std::string::npos)
+      throw std::runtime_error(path + ": not scale-gen rows");
+    pool.push_back({line.substr(at, end - at),
+                    arg::deserialize_arg(arg::arg_from_text(line.substr(end + 1)))});
+  }
+  if (pool.empty()) throw std::runtime_error(path + " has no rows");
+  return pool;
+}
+
+// One COPY row of jittered copy number `i` of the pool.
+std::string jittered_row(const ScaleArgs& a, const std::vector<PoolRow>& pool, long long i) {
+  const PoolRow& original = pool[std::size_t(i) % pool.size()];
+  const arg::ArgGraph copy = arg::jittered_copy(
+      original.graph,
+      arg::gen::mix_seed("scale-gen:jitter", a.seed * 1000003ULL + std::uint64_t(i)),
+      a.value_jitter);
+  return metadata(a, a.first_id + i) + original.label + '\t' +
+         arg::arg_to_text(arg::serialize_arg(copy)) + '\n';
+}
+
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -90,6 +130,8 @@ int run_scale_gen(ScaleArgs& a) {
     if (!a.cache.empty()) fs::create_directories(a.cache);
   }
   a.options.threads = 1;  // parallel over models instead
+  std::vector<PoolRow> pool;
+  if (!a.jitter_from.empty()) pool = read_pool(a.jitter_from);
 
   std::ofstream file;
   std::ostream* out = &std::cout;
@@ -112,7 +154,9 @@ int run_scale_gen(ScaleArgs& a) {
     arg::parallel_for(rows.size(), a.threads, [&](std::size_t k) {
       const long long i = begin + (long long)k;
       try {
-        if (a.labels.empty()) {
+        if (!pool.empty()) {
+          rows[k] = jittered_row(a, pool, i);
+        } else if (a.labels.empty()) {
           rows[k] = generated_row(a, classes, i);
         } else {
           const arg::LabelledModel& m = set.models[std::size_t(i)];
@@ -168,6 +212,14 @@ const bool registered = argtool::register_command(
                      "their model_id)")
           ->check(CLI::ExistingFile);
       app.add_option("--cache", a->cache, "with --labels: folder caching built ARGs");
+      app.add_option("--jitter-from", a->jitter_from,
+                     "rows written by scale-gen: make --count jittered copies of their values "
+                     "(in turn) instead of building models")
+          ->check(CLI::ExistingFile);
+      app.add_option("--value-jitter", a->value_jitter,
+                     "with --jitter-from: relative amount each stored number moves by")
+          ->check(CLI::Range(0.0, 0.5))
+          ->capture_default_str();
       app.add_option("--resolution", a->resolution, "grid cells along each model's longest side")
           ->check(CLI::Range(8, 1024))
           ->capture_default_str();
