@@ -26,6 +26,15 @@ int max_texture_pixels = int(kDefaults.max_image_pixels);
 int build_threads = 1;
 bool query_cache = true;
 int ivf_probes_setting = 16;
+int ivf_candidates_setting = 100;
+int iterative_scan_setting = int(IterativeScan::StrictOrder);
+int max_scan_tuples_setting = 20000;
+
+const config_enum_entry kIterativeScanValues[] = {
+    {"off", int(IterativeScan::Off), false},
+    {"strict_order", int(IterativeScan::StrictOrder), false},
+    {"relaxed_order", int(IterativeScan::RelaxedOrder), false},
+    {nullptr, 0, false}};
 
 }  // namespace
 
@@ -63,6 +72,27 @@ void define_gucs() {
       "makes the search exact.",
       &ivf_probes_setting, ivf_probes_setting, 1, int(arg::kMaxSketchCells), PGC_USERSET, 0,
       nullptr, nullptr, nullptr);
+  DefineCustomIntVariable(
+      "arg.ivf_candidates",
+      "Nearest candidates by sketch that a search of an arg_ivf index of arg values ranks by "
+      "SIM at a time.",
+      "More candidates find more of the exact nearest and take longer (one SIM each).",
+      &ivf_candidates_setting, ivf_candidates_setting, 1, 100000, PGC_USERSET, 0, nullptr, nullptr,
+      nullptr);
+  DefineCustomEnumVariable(
+      "arg.iterative_scan",
+      "Whether a search of an arg_ivf index of arg values goes on past its first candidates "
+      "while rows are wanted (a WHERE clause rejected some).",
+      "strict_order leaves out rows nearer than one already returned, so the order is exact; "
+      "relaxed_order returns them; off stops after the first candidates.",
+      &iterative_scan_setting, iterative_scan_setting, kIterativeScanValues, PGC_USERSET, 0,
+      nullptr, nullptr, nullptr);
+  DefineCustomIntVariable(
+      "arg.max_scan_tuples", "Most candidates one iterative arg_ivf search ranks by SIM.",
+      "Bounds the time of a search whose WHERE clause rejects most rows; the first candidates "
+      "are always ranked.",
+      &max_scan_tuples_setting, max_scan_tuples_setting, 1, INT_MAX, PGC_USERSET, 0, nullptr,
+      nullptr, nullptr);
   MarkGUCPrefixReserved("arg");
 }
 
@@ -85,6 +115,18 @@ bool query_cache_enabled() {
 
 int ivf_probes() {
   return ivf_probes_setting;
+}
+
+int ivf_candidates() {
+  return ivf_candidates_setting;
+}
+
+IterativeScan iterative_scan() {
+  return IterativeScan(iterative_scan_setting);
+}
+
+int max_scan_tuples() {
+  return max_scan_tuples_setting;
 }
 
 }  // namespace argpg

@@ -19,7 +19,21 @@ int max_build_threads();
 // arg.query_cache: keep the deserialised ARG of a repeated argument across calls.
 bool query_cache_enabled();
 
-// arg.ivf_probes: how many cells of an arg_ivf index a search reads.
+// arg.ivf_probes: how many cells of an arg_ivf index a search reads (and reads further at a
+// time, in an iterative scan).
 int ivf_probes();
+
+// arg.ivf_candidates: how many of an arg_ivf index's nearest candidates by sketch a search of
+// `arg` values ranks by SIM at a time.
+int ivf_candidates();
+
+// arg.iterative_scan: whether a search of an arg_ivf index of `arg` values goes on past its
+// first batch of candidates when the executor asks for more rows (a filter rejected them), and
+// whether rows nearer than one already returned are then left out (strict) or returned.
+enum class IterativeScan { Off = 0, StrictOrder = 1, RelaxedOrder = 2 };
+IterativeScan iterative_scan();
+
+// arg.max_scan_tuples: the most candidates one iterative search ranks by SIM.
+int max_scan_tuples();
 
 }  // namespace argpg

@@ -142,12 +142,30 @@ void walk_list(Relation index, const CellRef& cell, int lock_mode, BufferAccessS
 }
 
 // Appends an entry for (`tid`, `sketch`) to the list of `cell`, extending it by a page when
-// its last page is full; WAL-logged.
+// its last page is full, unless `fill_holes` and an earlier page of the list has room (space
+// VACUUM freed: an insert's way; a build only appends); WAL-logged.
 void append_entry(Relation index, const CellRef& cell, ItemPointer tid, const char* sketch,
-                  Size sketch_size);
+                  Size sketch_size, bool fill_holes);
 
 // Reads the sketch bytes of an indexed value into `out`; raises XX001 when it is not one.
 void read_value(Datum value, arg::ShapeSketch& out);
+
+// Whether `type` is the extension's type `arg` (by name: the extension's types have no fixed
+// OIDs).
+bool is_arg_type(Oid type);
+
+// Whether `index` holds `arg` values (operator class arg_ops): its entries are the values'
+// sketches, and a search re-ranks its nearest candidates by SIM, read from the table.
+bool indexes_arg(Relation index);
+
+// The table column an index of `arg` values is on; raises 0A000 for an expression, whose value
+// a search could not read back from the table.
+AttrNumber indexed_column(Relation index);
+
+// An indexed value's sketch, read into `out`, and the bytes its entry stores (an arg_sketch's
+// own, or the sketch made from an arg's graph), in CurrentMemoryContext. Raises XX001 when the
+// value does not read.
+varlena* entry_sketch(Relation index, Datum value, arg::ShapeSketch& out);
 
 }  // namespace argpg::ivf
 

@@ -29,6 +29,8 @@ constexpr double kSamplePerCell = 20;
 constexpr int kBatch = 256;
 
 struct Sampling {
+  Relation index;
+  MemoryContext row_memory;  // one row's value and entry bytes
   arg::ShapeSketch* sample;  // a reservoir of `capacity`
   Size capacity, filled;
   double rows;
@@ -47,11 +49,15 @@ void sample_row(Relation, ItemPointer, Datum* values, bool* isnull, bool, void* 
   } else {
     ++s->filled;
   }
-  read_value(values[0], s->sample[slot]);
+  MemoryContext caller = MemoryContextSwitchTo(s->row_memory);
+  entry_sketch(s->index, values[0], s->sample[slot]);
+  MemoryContextSwitchTo(caller);
+  MemoryContextReset(s->row_memory);
 }
 
 struct Filing {
   Relation index;
+  bool of_arg;  // an index of arg values: entries are sketches made from them
   const Cells* cells;
   int threads;
   double rows;
@@ -79,7 +85,7 @@ void file_batch(Filing& f) {
   for (int i = 0; i < f.count; ++i) {
     CHECK_FOR_INTERRUPTS();
     append_entry(f.index, cells.refs[f.cell_of[i]], &f.tids[i], VARDATA_ANY(f.values[i]),
-                 VARSIZE_ANY_EXHDR(f.values[i]));
+                 VARSIZE_ANY_EXHDR(f.values[i]), /*fill_holes=*/false);
   }
   f.count = 0;
   MemoryContextReset(f.batch_memory);
@@ -90,10 +96,13 @@ void file_row(Relation, ItemPointer tid, Datum* values, bool* isnull, bool, void
   if (isnull[0]) return;
   // A copy in the batch's memory: the build scan's datum lives only for this call.
   MemoryContext old = MemoryContextSwitchTo(f->batch_memory);
-  varlena* v = PG_DETOAST_DATUM_COPY(values[0]);
+  varlena* v = f->of_arg ? entry_sketch(f->index, values[0], f->sketches[f->count])
+                         : PG_DETOAST_DATUM_COPY(values[0]);
   MemoryContextSwitchTo(old);
-  Outcome out = guarded([&] { arg::read_shape_sketch(view(v), f->sketches[f->count]); });
-  raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot read arg_sketch");
+  if (!f->of_arg) {
+    Outcome out = guarded([&] { arg::read_shape_sketch(view(v), f->sketches[f->count]); });
+    raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot read arg_sketch");
+  }
   f->tids[f->count] = *tid;
   f->values[f->count] = v;
   ++f->count;
@@ -169,9 +178,14 @@ IndexBuildResult* arg_ivf_build(Relation heap, Relation index, IndexInfo* info) 
   if (RelationGetNumberOfBlocks(index) != 0)
     elog(ERROR, "index \"%s\" already contains data", RelationGetRelationName(index));
   const int lists = lists_option(index);
+  const bool of_arg = indexes_arg(index);
+  if (of_arg) (void)indexed_column(index);  // refuses an expression before any work
 
   // First pass: a uniform sample (a reservoir) within maintenance_work_mem.
   Sampling s{};
+  s.index = index;
+  s.row_memory =
+      AllocSetContextCreate(CurrentMemoryContext, "arg_ivf build row", ALLOCSET_DEFAULT_SIZES);
   const Size by_memory = Size(maintenance_work_mem) * 1024 / sizeof(arg::ShapeSketch);
   const Size wanted = Size(kSamplePerCell * (lists > 0 ? lists : int(arg::kMaxSketchCells)));
   s.capacity = std::max<Size>(1, std::min(by_memory, wanted));
@@ -203,6 +217,7 @@ IndexBuildResult* arg_ivf_build(Relation heap, Relation index, IndexInfo* info) 
     argpg::raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot choose arg_ivf centres");
   }
   pfree(s.sample);
+  MemoryContextDelete(s.row_memory);
   write_cells(index, MAIN_FORKNUM, centres, count);
 
   // Second pass: every row to its nearest centre's list.
@@ -210,6 +225,7 @@ IndexBuildResult* arg_ivf_build(Relation heap, Relation index, IndexInfo* info) 
   cell_set.centres = centres;
   Filing* f = static_cast<Filing*>(palloc0(sizeof(Filing)));
   f->index = index;
+  f->of_arg = of_arg;
   f->cells = &cell_set;
   f->threads = argpg::max_build_threads();
   f->sketches = static_cast<arg::ShapeSketch*>(

@@ -13,6 +13,7 @@ extern "C" {
 #include "catalog/pg_opclass.h"
 #include "catalog/pg_type.h"
 #include "commands/vacuum.h"
+#include "optimizer/cost.h"
 #include "optimizer/optimizer.h"
 #include "utils/catcache.h"
 #include "utils/float.h"
@@ -82,13 +83,19 @@ void cost_estimate(PlannerInfo* root, IndexPath* path, double loop_count, Cost* 
   const double entries = share * path->indexinfo->tuples;
   *startup = share * double(path->indexinfo->pages) * seq_page_cost +
              entries * (cpu_index_tuple_cost + distance) + double(cells) * distance;
+  // An index of arg values ranks its first candidates by SIM (<~>'s COST 2000) before its first
+  // row, each read from the table.
+  if (path->indexinfo->opcintype[0] != InvalidOid && is_arg_type(path->indexinfo->opcintype[0]))
+    *startup += std::min(double(argpg::ivf_candidates()), entries) *
+                (2000 * cpu_operator_cost + random_page_cost);
   *total = *startup + entries * cpu_tuple_cost;
   *selectivity = costs.indexSelectivity;
   *correlation = 0;
   *pages = share * double(path->indexinfo->pages);
 }
 
-// The opclass orders arg_sketch by one operator and needs no support function.
+// An opclass orders arg_sketch (arg_sketch_ops) or arg (arg_ops) by one operator and needs no
+// support function.
 bool validate(Oid opclass) {
   HeapTuple tuple = SearchSysCache1(CLAOID, ObjectIdGetDatum(opclass));
   if (!HeapTupleIsValid(tuple)) return false;
@@ -97,9 +104,9 @@ bool validate(Oid opclass) {
   ReleaseSysCache(tuple);
   HeapTuple type_tuple = SearchSysCache1(TYPEOID, ObjectIdGetDatum(type));
   if (!HeapTupleIsValid(type_tuple)) return false;
+  const char* type_name = NameStr(reinterpret_cast<Form_pg_type>(GETSTRUCT(type_tuple))->typname);
   const bool sketch =
-      std::strcmp(NameStr(reinterpret_cast<Form_pg_type>(GETSTRUCT(type_tuple))->typname),
-                  "arg_sketch") == 0;
+      std::strcmp(type_name, "arg_sketch") == 0 || std::strcmp(type_name, "arg") == 0;
   ReleaseSysCache(type_tuple);
   CatCList* ops = SearchSysCacheList1(AMOPSTRATEGY, ObjectIdGetDatum(family));
   bool ok = sketch && ops->n_members == 1;

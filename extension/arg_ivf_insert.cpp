@@ -17,10 +17,9 @@ bool arg_ivf_insert(Relation index, Datum* values, bool* isnull, ItemPointer hea
   MemoryContext memory =
       AllocSetContextCreate(CurrentMemoryContext, "arg_ivf insert", ALLOCSET_DEFAULT_SIZES);
   MemoryContext caller = MemoryContextSwitchTo(memory);
-  // Detoasted once: read here, stored below.
-  varlena* v = PG_DETOAST_DATUM_PACKED(values[0]);
+  // Detoasted once: read here, stored below (an arg's sketch is made from it).
   auto* sketch = static_cast<arg::ShapeSketch*>(palloc(sizeof(arg::ShapeSketch)));
-  read_value(PointerGetDatum(v), *sketch);
+  varlena* v = entry_sketch(index, values[0], *sketch);
   // cells.centres lives in the relcache entry: nothing that may accept invalidation messages
   // (a lock, a detoast) may run before its last use, nearest_cell.
   const Cells cells = read_cells(index, true);
@@ -30,7 +29,8 @@ bool arg_ivf_insert(Relation index, Datum* values, bool* isnull, ItemPointer hea
         argpg::guarded([&] { cell = arg::nearest_cell(*sketch, cells.centres, cells.count); });
     argpg::raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot compare arg_sketch values");
   }
-  append_entry(index, cells.refs[cell], heap_tid, VARDATA_ANY(v), VARSIZE_ANY_EXHDR(v));
+  append_entry(index, cells.refs[cell], heap_tid, VARDATA_ANY(v), VARSIZE_ANY_EXHDR(v),
+               /*fill_holes=*/true);
   MemoryContextSwitchTo(caller);
   MemoryContextDelete(memory);
   return false;

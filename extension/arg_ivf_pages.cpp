@@ -1,12 +1,16 @@
 // The arg_ivf index's pages: checked reads of the metapage, cells and entries, new pages, and
 // appending an entry to a cell's list.
+#include "graph/serialize.hpp"
 #include "search/sketch_cells.hpp"
 
 #include "arg_ivf.hpp"
 
 extern "C" {
+#include "access/htup_details.h"
+#include "catalog/pg_type.h"
 #include "storage/lmgr.h"
 #include "utils/memutils.h"
+#include "utils/syscache.h"
 }
 
 namespace argpg::ivf {
@@ -226,8 +230,35 @@ Cells read_cells(Relation index, bool with_centres) {
   return cells;
 }
 
+namespace {
+
+// The first page of the cell's list before its last with room for `size` more bytes, or
+// InvalidBlockNumber: the holes VACUUM left. Pages read one at a time under a share lock, while
+// the caller holds the cell page (no other insert into the cell can fill them meanwhile).
+BlockNumber page_with_room(Relation index, const CellHead& head, BlockNumber first_list_page,
+                           BlockNumber cell_page, Size size) {
+  BlockNumber block = head.first, at = cell_page, found = InvalidBlockNumber, pages = 0;
+  BlockNumber blocks = RelationGetNumberOfBlocks(index);
+  while (block != InvalidBlockNumber && block != head.last && found == InvalidBlockNumber) {
+    CHECK_FOR_INTERRUPTS();
+    check_link(index, &blocks, first_list_page, block, at);
+    if (++pages > blocks) corrupted(index, block, "list links in a loop");
+    Buffer buf = ReadBuffer(index, block);
+    LockBuffer(buf, BUFFER_LOCK_SHARE);
+    Page page = BufferGetPage(buf);
+    check_page(index, page, block, kListPage);
+    if (PageGetFreeSpace(page) >= size) found = block;
+    at = block;
+    block = reinterpret_cast<PageOpaque*>(PageGetSpecialPointer(page))->next;
+    UnlockReleaseBuffer(buf);
+  }
+  return found;
+}
+
+}  // namespace
+
 void append_entry(Relation index, const CellRef& cell, ItemPointer tid, const char* sketch,
-                  Size sketch_size) {
+                  Size sketch_size, bool fill_holes) {
   if (sketch_size == 0 || sketch_size > kMaxSketchBytes)
     ereport(ERROR, (errcode(ERRCODE_PROGRAM_LIMIT_EXCEEDED),
                     errmsg("arg_sketch of %zu bytes does not fit an arg_ivf entry", sketch_size)));
@@ -249,6 +280,35 @@ void append_entry(Relation index, const CellRef& cell, ItemPointer tid, const ch
                                  cell.item, &centre, &centre_size);
 
   Buffer last_buf = InvalidBuffer;
+  // Where the last page is full, a page VACUUM left room in takes the entry (entries never
+  // move and pages never leave their list, so a concurrent scan misses nothing).
+  if (fill_holes && head.last != InvalidBlockNumber) {
+    Buffer probe = ReadBuffer(index, head.last);
+    LockBuffer(probe, BUFFER_LOCK_SHARE);
+    const bool last_full = PageGetFreeSpace(BufferGetPage(probe)) < MAXALIGN(entry_size);
+    UnlockReleaseBuffer(probe);
+    const BlockNumber hole = last_full ? page_with_room(index, head, cell.first_list_page,
+                                                        cell.page, MAXALIGN(entry_size))
+                                       : InvalidBlockNumber;
+    if (hole != InvalidBlockNumber) {
+      Buffer buf = ReadBuffer(index, hole);
+      LockBuffer(buf, BUFFER_LOCK_EXCLUSIVE);
+      check_page(index, BufferGetPage(buf), hole, kListPage);
+      GenericXLogState* state = GenericXLogStart(index);
+      Page target = GenericXLogRegisterBuffer(state, buf, 0);
+      if (PageAddItem(target, entry, entry_size, InvalidOffsetNumber, false, false) ==
+          InvalidOffsetNumber) {
+        GenericXLogAbort(state);
+        elog(ERROR, "arg_ivf: could not add an entry to index \"%s\"",
+             RelationGetRelationName(index));
+      }
+      GenericXLogFinish(state);
+      UnlockReleaseBuffer(buf);
+      UnlockReleaseBuffer(cell_buf);
+      pfree(entry);
+      return;
+    }
+  }
   if (head.last != InvalidBlockNumber) {
     last_buf = ReadBuffer(index, head.last);
     LockBuffer(last_buf, BUFFER_LOCK_EXCLUSIVE);
@@ -292,6 +352,49 @@ void read_value(Datum value, arg::ShapeSketch& out) {
   Outcome result = guarded([&] { arg::read_shape_sketch(view(v), out); });
   if (v != reinterpret_cast<varlena*>(DatumGetPointer(value))) pfree(v);
   raise_if_failed(result, ERRCODE_DATA_CORRUPTED, "cannot read arg_sketch");
+}
+
+bool is_arg_type(Oid type) {
+  HeapTuple tuple = SearchSysCache1(TYPEOID, ObjectIdGetDatum(type));
+  if (!HeapTupleIsValid(tuple)) return false;
+  const bool is_arg =
+      std::strcmp(NameStr(reinterpret_cast<Form_pg_type>(GETSTRUCT(tuple))->typname), "arg") == 0;
+  ReleaseSysCache(tuple);
+  return is_arg;
+}
+
+bool indexes_arg(Relation index) {
+  return is_arg_type(index->rd_opcintype[0]);
+}
+
+AttrNumber indexed_column(Relation index) {
+  const AttrNumber column = index->rd_index->indkey.values[0];
+  if (column <= 0)
+    ereport(ERROR,
+            (errcode(ERRCODE_FEATURE_NOT_SUPPORTED),
+             errmsg("arg_ivf index \"%s\" is on an expression", RelationGetRelationName(index)),
+             errdetail("An index of arg values re-ranks its candidates by SIM, reading the "
+                       "values from the table: it must be on a column."),
+             errhint("Store the expression in a generated column and index that column.")));
+  return column;
+}
+
+varlena* entry_sketch(Relation index, Datum value, arg::ShapeSketch& out) {
+  varlena* v = PG_DETOAST_DATUM_PACKED(value);
+  if (!indexes_arg(index)) {
+    Outcome result = guarded([&] { arg::read_shape_sketch(view(v), out); });
+    raise_if_failed(result, ERRCODE_DATA_CORRUPTED, "cannot read arg_sketch");
+    return v;
+  }
+  varlena* bytes = nullptr;
+  // Stored values were checked on input: read without the digest pass, as <~> reads them.
+  Outcome result = guarded([&] {
+    out = arg::shape_sketch(arg::deserialize_arg(view(v), /*check_digest=*/false));
+    bytes = to_varlena(arg::write_shape_sketch(out));
+  });
+  if (v != reinterpret_cast<varlena*>(DatumGetPointer(value))) pfree(v);
+  raise_if_failed(result, ERRCODE_DATA_CORRUPTED, "cannot read the indexed ARG");
+  return bytes;
 }
 
 }  // namespace argpg::ivf

@@ -1,14 +1,19 @@
-// Searching an arg_ivf index: the query's nearest cells, their lists ranked by
-// arg_sketch_distance, rows returned nearest first.
+// Searching an arg_ivf index: the query's nearest cells, their entries ranked by sketch
+// distance; on an index of `arg` values, the nearest candidates re-ranked by exact SIM, read
+// from the table, batch after batch while the executor asks for more rows.
 #include <algorithm>
 #include <cmath>
+#include <new>
 
+#include "search/query_ranker.hpp"
 #include "search/sketch_cells.hpp"
 
 #include "arg_ivf.hpp"
 
 extern "C" {
 #include "access/relscan.h"
+#include "access/tableam.h"
+#include "executor/tuptable.h"
 #include "pgstat.h"
 #include "utils/memutils.h"
 #include "utils/snapmgr.h"
@@ -19,27 +24,65 @@ namespace {
 using namespace argpg::ivf;
 
 struct Hit {
-  double distance;
+  double distance;  // sketch distance, then SIM once re-ranked
   ItemPointerData tid;
 };
 
-// A scan's state: its hits once the lists are read, and where it stands in them.
+bool nearer(const Hit& a, const Hit& b) {
+  if (a.distance != b.distance) return a.distance < b.distance;
+  return ItemPointerCompare(const_cast<ItemPointer>(&a.tid), const_cast<ItemPointer>(&b.tid)) < 0;
+}
+
+// Min-heap order of the pool: the root is the nearest.
+bool farther(const Hit& a, const Hit& b) {
+  return nearer(b, a);
+}
+
+// A scan's state. Candidates are every entry of the probed cells by sketch distance; `taken` of
+// them have gone to a batch. An index of sketches returns candidates as they are; an index of
+// `arg` values re-ranks each batch of arg.ivf_candidates by SIM and returns it in that order.
 struct ScanState {
-  bool ranked;     // the lists have been read for the current keys
+  bool started;    // the query has been read for the current keys
   bool unordered;  // the query is NULL: every row, no distance
+  bool exact;      // an index of arg values: batches re-ranked by SIM
   Hit* hits;
-  Size count, capacity, next;
-  arg::ShapeSketch* query;  // reused across rescans
-  arg::ShapeSketch* row;    // one entry's sketch, reused
-  MemoryContext memory;     // the hits and a ranking's working memory, reset on each ranking
+  Size count, capacity, taken;
+  uint32* cell_order;  // every cell, nearest to the query first
+  uint32 cells, probed;
+  // Candidates ranked by SIM and not yet returned: a min-heap by SIM.
+  Hit* pool;
+  Size pool_count, pool_capacity;
+  // SIM less sketch distance of every ranked row: how far SIM lies above the sketch's estimate,
+  // which tells how near an unranked candidate's SIM could be (margin()).
+  double* excess;
+  Size excess_capacity;
+  double margin;  // a low quantile of `excess`, refreshed after each batch
+  int batches;
+  Size reranked;  // rows ranked by SIM in this scan (arg.max_scan_tuples bounds it)
+  double last;    // the SIM of the last row returned (strict order drops rows below it)
+  arg::ShapeSketch* query;
+  arg::ShapeSketch* row;
+  arg::QueryRanker* ranker;  // C++ state, deleted by `on_reset` with `memory`
+  MemoryContextCallback on_reset;
+  IndexFetchTableData* fetch;
+  TupleTableSlot* slot;
+  AttrNumber column;
+  MemoryContext memory;       // hits, batch and the ranker, reset at each rescan
+  MemoryContext row_memory;   // one row's detoasted value
+  MemoryContext scan_memory;  // the scan's own (the table fetch and slot live there)
 };
+
+void delete_ranker(void* arg) {
+  auto* s = static_cast<ScanState*>(arg);
+  delete s->ranker;
+  s->ranker = nullptr;
+}
 
 void grow(ScanState& s, Size more) {
   if (s.count + more <= s.capacity) return;
   const Size capacity = std::max<Size>(s.capacity * 2, s.count + more);
-  s.hits = static_cast<Hit*>(
-      s.hits ? repalloc_huge(s.hits, capacity * sizeof(Hit))
-             : MemoryContextAllocHuge(CurrentMemoryContext, capacity * sizeof(Hit)));
+  s.hits = static_cast<Hit*>(s.hits ? repalloc_huge(s.hits, capacity * sizeof(Hit))
+                                    : MemoryContextAllocHuge(s.memory, capacity * sizeof(Hit)));
   s.capacity = capacity;
 }
 
@@ -58,29 +101,46 @@ void read_list(IndexScanDesc scan, ScanState& s, const CellRef& cell, BlockNumbe
               // Entries are checked outside the guarded loop (ereport may not run inside it).
               const char* sketch[MaxOffsetNumber];
               Size size[MaxOffsetNumber];
+              OffsetNumber used = 0;
               for (OffsetNumber item = FirstOffsetNumber; item <= items; ++item) {
-                Hit& hit = s.hits[s.count + item - 1];
-                read_entry(index, page, block, item, &hit.tid, &sketch[item - 1], &size[item - 1]);
+                Hit& hit = s.hits[s.count + used];
+                read_entry(index, page, block, item, &hit.tid, &sketch[used], &size[used]);
                 hit.distance = 0;
+                ++used;
               }
               if (!s.unordered) {
                 argpg::Outcome out = argpg::guarded([&] {
-                  for (OffsetNumber item = 0; item < items; ++item) {
-                    arg::read_shape_sketch(std::string_view(sketch[item], size[item]), *s.row);
+                  for (OffsetNumber k = 0; k < used; ++k) {
+                    arg::read_shape_sketch(std::string_view(sketch[k], size[k]), *s.row);
                     const double d = arg::sketch_distance(*s.query, *s.row);
                     // Checked sketches give finite distances; a NaN would break the sort.
                     if (std::isnan(d)) throw arg::InputError("its distance is not a number");
-                    s.hits[s.count + item].distance = d;
+                    s.hits[s.count + k].distance = d;
                   }
                 });
                 if (out.failure != argpg::Failure::None)
                   corrupted(index, block, psprintf("entry's sketch unreadable (%s)", out.message));
               }
-              s.count += items;
+              s.count += used;
             });
 }
 
-void rank(IndexScanDesc scan, ScanState& s) {
+// Reads the next `n` cells of the query's order into the hits, and sorts the hits not yet
+// taken.
+void probe_cells(IndexScanDesc scan, ScanState& s, uint32 n) {
+  const Cells cells = read_cells(scan->indexRelation, false);
+  if (cells.count != s.cells) corrupted(scan->indexRelation, 0, "cell count changed");
+  BlockNumber blocks = RelationGetNumberOfBlocks(scan->indexRelation);
+  const uint32 end = std::min(s.cells, s.probed + n);
+  for (; s.probed < end; ++s.probed)
+    read_list(scan, s, cells.refs[s.cell_order[s.probed]], &blocks);
+  pfree(cells.refs);
+  if (!s.unordered) std::sort(s.hits + s.taken, s.hits + s.count, nearer);
+}
+
+// Reads the query, orders the cells by their centres' distance to it and reads the first
+// arg.ivf_probes of them (every cell for a NULL query).
+void start(IndexScanDesc scan, ScanState& s) {
   Relation index = scan->indexRelation;
   if (!IsMVCCSnapshot(scan->xs_snapshot))
     ereport(ERROR, (errcode(ERRCODE_FEATURE_NOT_SUPPORTED),
@@ -91,43 +151,156 @@ void rank(IndexScanDesc scan, ScanState& s) {
             (errcode(ERRCODE_FEATURE_NOT_SUPPORTED),
              errmsg("arg_ivf index \"%s\" only orders by <~>", RelationGetRelationName(index))));
   const ScanKey key = &scan->orderByData[0];
-  MemoryContextReset(s.memory);
-  s.hits = nullptr;
-  s.capacity = 0;
-  MemoryContext caller = MemoryContextSwitchTo(s.memory);
+  // The table is known once the scan has begun (index_beginscan sets it after ambeginscan).
+  if (s.exact && !s.fetch) {
+    if (!scan->heapRelation)
+      ereport(ERROR, (errcode(ERRCODE_FEATURE_NOT_SUPPORTED),
+                      errmsg("arg_ivf index \"%s\" is searched only by an index scan",
+                             RelationGetRelationName(index))));
+    MemoryContext caller = MemoryContextSwitchTo(s.scan_memory);
+    s.fetch = table_index_fetch_begin(scan->heapRelation);
+    s.slot = table_slot_create(scan->heapRelation, nullptr);
+    MemoryContextSwitchTo(caller);
+  }
+  MemoryContextReset(s.memory);  // deletes the last query's ranker
+  s.hits = s.pool = nullptr;
+  s.excess = nullptr;
+  s.capacity = s.count = s.taken = s.pool_count = s.pool_capacity = s.excess_capacity = 0;
+  s.batches = 0;
+  s.reranked = 0;
+  s.margin = 0;
+  s.last = -1;
+  s.on_reset = {delete_ranker, &s};
+  MemoryContextRegisterResetCallback(s.memory, &s.on_reset);
   s.unordered = (key->sk_flags & SK_ISNULL) != 0;
-  s.count = s.next = 0;
-  if (!s.unordered) read_value(key->sk_argument, *s.query);
+  if (!s.unordered) {
+    if (s.exact) {
+      varlena* v = PG_DETOAST_DATUM_PACKED(key->sk_argument);
+      argpg::Outcome out = argpg::guarded([&] {
+        s.ranker = new arg::QueryRanker(argpg::view(v));
+        *s.query = s.ranker->sketch();
+      });
+      argpg::raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot read the query ARG");
+    } else {
+      read_value(key->sk_argument, *s.query);
+    }
+  }
   // cells.centres lives in the relcache entry: nothing that may accept invalidation messages
   // (a lock, a detoast) may run before its last use below.
   const Cells cells = read_cells(index, !s.unordered);
-  // A NULL query has no nearest: every row, in no order (all its distances are NULL).
-  uint32 probes = s.unordered ? cells.count : uint32(argpg::ivf_probes());
-  uint32* probed = static_cast<uint32*>(palloc(sizeof(uint32) * cells.count));
-  uint32 n_probed = 0;
+  s.cells = cells.count;
+  s.probed = 0;
+  s.cell_order = static_cast<uint32*>(MemoryContextAlloc(s.memory, sizeof(uint32) * s.cells));
   if (s.unordered || !cells.refs[0].has_centre) {
-    for (uint32 c = 0; c < cells.count; ++c) probed[n_probed++] = c;
+    for (uint32 c = 0; c < cells.count; ++c) s.cell_order[c] = c;
   } else {
     argpg::Outcome out = argpg::guarded([&] {
-      for (std::size_t c : arg::cells_to_probe(*s.query, cells.centres, cells.count, probes))
-        probed[n_probed++] = uint32(c);
+      uint32 k = 0;
+      for (std::size_t c : arg::cells_to_probe(*s.query, cells.centres, cells.count, cells.count))
+        s.cell_order[k++] = uint32(c);
     });
     argpg::raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot compare arg_sketch values");
   }
-  // No ring buffer: a catalogue's lists are read again by the next search, so they should stay
-  // in shared buffers.
-  BlockNumber blocks = RelationGetNumberOfBlocks(index);
-  for (uint32 p = 0; p < n_probed; ++p) read_list(scan, s, cells.refs[probed[p]], &blocks);
-  if (!s.unordered)
-    std::sort(s.hits, s.hits + s.count, [](const Hit& a, const Hit& b) {
-      if (a.distance != b.distance) return a.distance < b.distance;
-      return ItemPointerCompare(const_cast<ItemPointer>(&a.tid), const_cast<ItemPointer>(&b.tid)) <
-             0;
-    });
-  pfree(probed);
   pfree(cells.refs);
-  MemoryContextSwitchTo(caller);
-  s.ranked = true;
+  // A NULL query has no nearest: every row, in no order (all its distances are NULL).
+  probe_cells(scan, s, s.unordered ? s.cells : uint32(argpg::ivf_probes()));
+  s.started = true;
+}
+
+// The table row's value of the indexed column, detoasted into row_memory, or nullptr when the
+// row is not visible to the scan's snapshot (or its value is NULL).
+varlena* table_value(IndexScanDesc scan, ScanState& s, ItemPointerData tid) {
+  bool call_again = false, all_dead = false;
+  if (!table_index_fetch_tuple(s.fetch, &tid, scan->xs_snapshot, s.slot, &call_again, &all_dead))
+    return nullptr;
+  bool isnull = false;
+  const Datum value = slot_getattr(s.slot, s.column, &isnull);
+  varlena* v = nullptr;
+  if (!isnull) {
+    MemoryContext caller = MemoryContextSwitchTo(s.row_memory);
+    v = PG_DETOAST_DATUM_PACKED(value);
+    MemoryContextSwitchTo(caller);
+  }
+  ExecClearTuple(s.slot);
+  return v;
+}
+
+// Ranks the next arg.ivf_candidates candidates by SIM into the pool, reading further cells in
+// an iterative scan once the probed ones are all ranked. Returns false when it may rank no
+// more: nothing left, arg.iterative_scan off after the first batch, or arg.max_scan_tuples
+// reached.
+bool rank_batch(IndexScanDesc scan, ScanState& s, argpg::IterativeScan mode) {
+  if (s.batches > 0 &&
+      (mode == argpg::IterativeScan::Off || s.reranked >= Size(argpg::max_scan_tuples())))
+    return false;
+  if (s.taken >= s.count && s.batches > 0 && s.probed < s.cells)
+    probe_cells(scan, s, uint32(argpg::ivf_probes()));
+  if (s.taken >= s.count) return false;
+  const Size n = std::min(Size(argpg::ivf_candidates()), s.count - s.taken);
+  if (s.pool_count + n > s.pool_capacity) {
+    const Size capacity = std::max(2 * s.pool_capacity, s.pool_count + n);
+    s.pool = static_cast<Hit*>(s.pool ? repalloc_huge(s.pool, capacity * sizeof(Hit))
+                                      : MemoryContextAllocHuge(s.memory, capacity * sizeof(Hit)));
+    s.pool_capacity = capacity;
+  }
+  if (s.reranked + n > s.excess_capacity) {
+    const Size capacity = std::max(2 * s.excess_capacity, s.reranked + n);
+    s.excess = static_cast<double*>(
+        s.excess ? repalloc_huge(s.excess, capacity * sizeof(double))
+                 : MemoryContextAllocHuge(s.memory, capacity * sizeof(double)));
+    s.excess_capacity = capacity;
+  }
+  Size ranked = 0;
+  for (Size i = 0; i < n; ++i) {
+    CHECK_FOR_INTERRUPTS();
+    const Hit& candidate = s.hits[s.taken + i];
+    MemoryContextReset(s.row_memory);
+    varlena* v = table_value(scan, s, candidate.tid);
+    if (!v) continue;  // not visible to this scan, or NULL now
+    double sim = 0;
+    argpg::Outcome out = argpg::guarded([&] { sim = s.ranker->sim(argpg::view(v)); });
+    argpg::raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot compare ARGs");
+    s.pool[s.pool_count++] = {sim, candidate.tid};
+    std::push_heap(s.pool, s.pool + s.pool_count, farther);
+    s.excess[s.reranked + ranked++] = sim - candidate.distance;
+  }
+  s.taken += n;
+  s.reranked += ranked;
+  ++s.batches;
+  // The tenth percentile of how far SIM lay above the sketch's distance among ranked rows: a
+  // candidate not yet ranked is taken to lie at least that far above its sketch distance.
+  if (s.reranked > 0) {
+    const Size at = s.reranked / 10;
+    std::nth_element(s.excess, s.excess + at, s.excess + s.reranked);
+    s.margin = s.excess[at];
+  }
+  return true;
+}
+
+// The next row in SIM order: the pool's nearest, once no candidate left to rank is likely to
+// be nearer (its sketch distance plus the margin is not below it); otherwise the next batch is
+// ranked first. In strict order a row nearer than one already returned is left out (a
+// candidate the estimate missed); relaxed order returns it.
+bool next_ranked(IndexScanDesc scan, ScanState& s, Hit& out) {
+  const argpg::IterativeScan mode = argpg::iterative_scan();
+  bool more = true;  // rank_batch may still add rows
+  for (;;) {
+    if (s.pool_count > 0) {
+      const Hit& nearest = s.pool[0];
+      const bool settled =
+          !more || mode == argpg::IterativeScan::RelaxedOrder ||
+          (s.taken < s.count && nearest.distance <= s.hits[s.taken].distance + s.margin);
+      if (settled) {
+        out = nearest;
+        std::pop_heap(s.pool, s.pool + s.pool_count, farther);
+        --s.pool_count;
+        if (mode == argpg::IterativeScan::StrictOrder && out.distance < s.last) continue;
+        return true;
+      }
+    }
+    if (more) more = rank_batch(scan, s, mode);
+    if (!more && s.pool_count == 0) return false;
+  }
 }
 
 }  // namespace
@@ -144,14 +317,18 @@ IndexScanDesc arg_ivf_beginscan(Relation index, int nkeys, int norderbys) {
   s->query = static_cast<arg::ShapeSketch*>(palloc(sizeof(arg::ShapeSketch)));
   s->row = static_cast<arg::ShapeSketch*>(palloc(sizeof(arg::ShapeSketch)));
   s->memory = AllocSetContextCreate(CurrentMemoryContext, "arg_ivf scan", ALLOCSET_DEFAULT_SIZES);
+  s->row_memory =
+      AllocSetContextCreate(CurrentMemoryContext, "arg_ivf scan row", ALLOCSET_DEFAULT_SIZES);
+  s->exact = indexes_arg(index);
+  if (s->exact) s->column = indexed_column(index);
+  s->scan_memory = CurrentMemoryContext;
   scan->opaque = s;
   return scan;
 }
 
 void arg_ivf_rescan(IndexScanDesc scan, ScanKey keys, int nkeys, ScanKey orderbys, int norderbys) {
   auto* s = static_cast<ScanState*>(scan->opaque);
-  s->ranked = false;
-  s->count = s->next = 0;
+  s->started = false;
   if (keys && scan->numberOfKeys > 0)
     std::memmove(scan->keyData, keys, sizeof(ScanKeyData) * size_t(scan->numberOfKeys));
   if (orderbys && scan->numberOfOrderBys > 0)
@@ -160,12 +337,20 @@ void arg_ivf_rescan(IndexScanDesc scan, ScanKey keys, int nkeys, ScanKey orderby
 
 bool arg_ivf_gettuple(IndexScanDesc scan, ScanDirection) {
   auto* s = static_cast<ScanState*>(scan->opaque);
-  if (!s->ranked) {
+  if (!s->started) {
     pgstat_count_index_scan(scan->indexRelation);
-    rank(scan, *s);
+    start(scan, *s);
   }
-  if (s->next >= s->count) return false;
-  const Hit& hit = s->hits[s->next++];
+  Hit hit;
+  if (s->exact && !s->unordered) {
+    if (!next_ranked(scan, *s, hit)) return false;
+    s->last = std::max(s->last, hit.distance);
+  } else {
+    // An index of sketches returns the candidates of the probed cells themselves; a NULL
+    // query, every row.
+    if (s->taken >= s->count) return false;
+    hit = s->hits[s->taken++];
+  }
   scan->xs_heaptid = hit.tid;
   scan->xs_recheck = false;
   scan->xs_recheckorderby = false;
@@ -178,7 +363,10 @@ bool arg_ivf_gettuple(IndexScanDesc scan, ScanDirection) {
 
 void arg_ivf_endscan(IndexScanDesc scan) {
   auto* s = static_cast<ScanState*>(scan->opaque);
-  MemoryContextDelete(s->memory);
+  if (s->fetch) table_index_fetch_end(s->fetch);
+  if (s->slot) ExecDropSingleTupleTableSlot(s->slot);
+  MemoryContextDelete(s->memory);  // deletes the ranker
+  MemoryContextDelete(s->row_memory);
   pfree(s->query);
   pfree(s->row);
   pfree(s);

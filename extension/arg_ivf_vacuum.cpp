@@ -51,8 +51,8 @@ void walk_lists(IndexVacuumInfo* info, IndexBulkDeleteResult* stats,
 
 extern "C" {
 
-// Emptied pages stay in their lists (a later insert into the cell fills its last page only);
-// REINDEX compacts an index after large deletions.
+// Emptied pages stay in their lists, and a later insert into the cell fills them before it adds
+// a page; REINDEX still packs an index tighter after large deletions.
 IndexBulkDeleteResult* arg_ivf_bulkdelete(IndexVacuumInfo* info, IndexBulkDeleteResult* stats,
                                           IndexBulkDeleteCallback callback, void* state) {
   if (!stats) stats = static_cast<IndexBulkDeleteResult*>(palloc0(sizeof(IndexBulkDeleteResult)));

@@ -189,7 +189,7 @@ DROP INDEX many_lists;
 -- Errors.
 CREATE INDEX ON shapes USING arg_ivf (sk) WITH (lists = -1);
 CREATE INDEX ON shapes USING arg_ivf (sk) WITH (lists = 5000);
-CREATE INDEX ON shapes USING arg_ivf (descr);
+CREATE INDEX ON shapes USING arg_ivf (class);
 CREATE INDEX ON shapes USING arg_ivf (sk, id);
 SET arg.ivf_probes = 0;
 

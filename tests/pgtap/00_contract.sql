@@ -1,7 +1,7 @@
 -- The SQL contract of the extension: its objects, their signatures and their markings.
 BEGIN;
 CREATE EXTENSION IF NOT EXISTS arg CASCADE;
-SELECT plan(195);
+SELECT plan(196);
 
 SELECT has_extension('arg', 'the arg extension is installed');
 SELECT has_type('arg', 'type arg exists');
@@ -107,6 +107,7 @@ INSERT INTO surface VALUES
   ('arg_sketch_distance(arg_sketch,arg_sketch,arg_weights)', 'double precision', true),
   ('arg_sketch_dist(arg_sketch,arg_sketch)', 'double precision', true),
   ('arg_ivf_handler(internal)', 'index_am_handler', false),
+  ('arg_index_check(regclass)', 'record', false),
   ('arg_knn(anyelement,name,arg,integer,integer,jsonb,name,name,integer)',
    'TABLE(obj anyelement, sim double precision)', false),
   ('arg_index_trigger()', 'trigger', false),

@@ -176,6 +176,7 @@ CREATE TEMP TABLE pool (
   id serial PRIMARY KEY, typ regtype NOT NULL, class text NOT NULL, label text NOT NULL,
   v_bytea bytea, v_text text, v_int4 int4, v_int8 int8, v_float8 float8, v_float4 float4,
   v_bool bool, v_arg arg, v_weights arg_weights, v_jsonb jsonb, v_name name, v_sketch arg_sketch,
+  v_regclass regclass,
   v_sql text  -- an expression instead of a stored value (polymorphic arguments)
 );
 CREATE FUNCTION pg_temp.column_of(t regtype) RETURNS text LANGUAGE sql IMMUTABLE AS $$
@@ -185,7 +186,7 @@ CREATE FUNCTION pg_temp.column_of(t regtype) RETURNS text LANGUAGE sql IMMUTABLE
                 WHEN 'boolean'::regtype THEN 'v_bool' WHEN 'arg'::regtype THEN 'v_arg'
                 WHEN 'arg_weights'::regtype THEN 'v_weights' WHEN 'jsonb'::regtype THEN 'v_jsonb'
                 WHEN 'name'::regtype THEN 'v_name' WHEN 'anyelement'::regtype THEN 'v_sql'
-                WHEN 'arg_sketch'::regtype THEN 'v_sketch' END $$;
+                WHEN 'arg_sketch'::regtype THEN 'v_sketch' WHEN 'regclass'::regtype THEN 'v_regclass' END $$;
 -- The SQL expression for pool value `id`.
 CREATE FUNCTION pg_temp.value_sql(id int) RETURNS text LANGUAGE sql STABLE AS $$
   SELECT coalesce(v_sql, format('(SELECT %s FROM pg_temp.pool WHERE id = %s)', pg_temp.column_of(typ), id))
@@ -193,6 +194,9 @@ CREATE FUNCTION pg_temp.value_sql(id int) RETURNS text LANGUAGE sql STABLE AS $$
 
 -- A table for the functions that take a table's row type (anyelement) and a column name.
 CREATE TEMP TABLE knn_objects (id int, museum text, descr arg);
+-- And an arg_ivf index on it, for the functions that take an index.
+CREATE INDEX knn_objects_descr ON knn_objects USING arg_ivf (descr);
+CREATE INDEX knn_objects_id ON knn_objects (id);
 
 -- Valid values: candidates for the arguments that are not the hostile one.
 INSERT INTO pool (typ, class, label, v_bytea) SELECT 'bytea', 'valid', name, bytes FROM valid
@@ -210,11 +214,12 @@ INSERT INTO pool (typ, class, label, v_sketch) SELECT 'arg_sketch', 'valid', 'th
 INSERT INTO pool (typ, class, label, v_jsonb) VALUES ('jsonb', 'valid', '{}', '{}');
 INSERT INTO pool (typ, class, label, v_name) VALUES ('name', 'valid', 'descr', 'descr');
 INSERT INTO pool (typ, class, label, v_sql) VALUES ('anyelement', 'valid', 'a table''s row type', 'NULL::pg_temp.knn_objects');
+INSERT INTO pool (typ, class, label, v_regclass) VALUES ('regclass', 'valid', 'an arg_ivf index', 'pg_temp.knn_objects_descr');
 
 -- NULL of every type.
 INSERT INTO pool (typ, class, label)
 SELECT t::regtype, 'NULL', 'NULL' FROM unnest(ARRAY['bytea', 'text', 'integer', 'bigint', 'double precision',
-  'real', 'boolean', 'arg', 'arg_weights', 'jsonb', 'name', 'arg_sketch']) t;
+  'real', 'boolean', 'arg', 'arg_weights', 'jsonb', 'name', 'arg_sketch', 'regclass']) t;
 INSERT INTO pool (typ, class, label, v_sql) VALUES ('anyelement', 'NULL', 'NULL::text', 'NULL::text');
 
 -- Empty values.
@@ -277,6 +282,10 @@ SELECT 'jsonb', 'random', left(j, 60), j::jsonb FROM unnest(ARRAY['"x"', '1', 'n
   '{"museum": null}', '{"museum": "M1", "id": 3}', '{"museum": "x'' OR true --"}', '{"descr\" IS NULL OR \"x": 1}',
   repeat('[', 1000) || repeat(']', 1000),
   (SELECT '{' || string_agg(format('"k%s": %s', i, i), ',') || '}' FROM generate_series(1, 2000) i)]) j;
+INSERT INTO pool (typ, class, label, v_regclass) VALUES
+  ('regclass', 'random', 'a table', 'pg_temp.knn_objects'), ('regclass', 'random', 'a B-tree index', 'pg_temp.knn_objects_id'),
+  ('regclass', 'random', 'a catalogue', 'pg_class'), ('regclass', 'random', 'OID 0', 0),
+  ('regclass', 'random', 'an OID of nothing', 4000000000);
 INSERT INTO pool (typ, class, label, v_sql)
 SELECT 'anyelement', 'random', e, e FROM unnest(ARRAY['NULL::int', '42', '''x''::text', 'NULL::pg_temp.pool',
   'ROW(1, 2)', 'NULL::pg_class']) e;

@@ -19,10 +19,10 @@ pg_config=${PG_CONFIG:-/usr/lib/postgresql/15/bin/pg_config}
 [[ -x "$pg_config" ]] || pg_config=$(command -v pg_config)
 bindir=$("$pg_config" --bindir)
 current=$(sed -n "s/^default_version *= *'\(.*\)'/\1/p" extension/arg.control)
-old=arg_upgrade_old fresh=arg_upgrade_fresh restored=arg_upgrade_restored
+old=arg_upgrade_old fresh=arg_upgrade_fresh restored=arg_upgrade_restored mid=arg_upgrade_mid
 work=$(mktemp -d)
 drop_databases() {
-  for db in $old $fresh $restored; do
+  for db in $old $fresh $restored $mid; do
     PGOPTIONS='-c client_min_messages=warning' psql -X -q -d postgres \
       -c "DROP DATABASE IF EXISTS $db WITH (FORCE)" >/dev/null 2>&1
   done
@@ -59,7 +59,7 @@ nearest() {
 }
 value_of() { printf 'arg1:%s' "$(base64 -w0 "tests/unit/fixtures/format1/$1.arg")"; }
 
-echo "1..24"
+echo "1..30"
 drop_databases
 q -d postgres -c "CREATE DATABASE $old" -c "CREATE DATABASE $fresh" -c "CREATE DATABASE $restored" \
   >/dev/null || exit 1
@@ -163,6 +163,40 @@ check "the restored generated column is rebuilt byte-identical" \
   same "$museum_before" "$(fingerprint $restored museum descr)"
 check "the restored indexes answer as in 0.1.0" \
   same "$legacy_nearest $museum_nearest" "$(nearest $restored legacy) $(nearest $restored museum)"
+
+# From 0.2.0: a stored sketch column with its arg_ivf index keeps working, and the arg column
+# takes an index of its own, which the plain query then uses.
+q -d postgres -c "CREATE DATABASE $mid" >/dev/null || exit 1
+q -d $mid >/dev/null <<'SQL' || exit 1
+CREATE EXTENSION cube;
+CREATE EXTENSION arg VERSION '0.2.0';
+CREATE TABLE objects (id int PRIMARY KEY, descr arg,
+                      sk arg_sketch GENERATED ALWAYS AS (arg_sketch(descr)) STORED);
+INSERT INTO objects SELECT i, arg_build(arg_generate_model(c, i::int, 12))
+FROM unnest(ARRAY['vase', 'cup', 'torus', 'chair', 'human', 'table']) WITH ORDINALITY AS t(c, i);
+CREATE INDEX objects_sk ON objects USING arg_ivf (sk) WITH (lists = 2);
+SQL
+sketch_nearest() {
+  q -d $mid -c "SET enable_seqscan = off" -c "SET arg.ivf_probes = 2" \
+    -c "SELECT string_agg(id::text, ',') FROM (SELECT id FROM objects ORDER BY sk <~> (SELECT sk FROM objects WHERE id = 1) LIMIT 6) s"
+}
+mid_before=$(sketch_nearest)
+check "ALTER EXTENSION arg UPDATE from 0.2.0 succeeds" q -d $mid -c "ALTER EXTENSION arg UPDATE"
+check "the catalogue updated from 0.2.0 equals a fresh $current install" \
+  diff -u "$work/fresh.txt" <(catalogue $mid)
+check "the 0.2.0 arg_ivf index of sketches answers as before" same "$mid_before" "$(sketch_nearest)"
+check "arg_index_check passes on the 0.2.0 index of sketches" \
+  same "6|6" "$(q -d $mid -c "SELECT entries, table_rows FROM arg_index_check('objects_sk')")"
+check "an arg_ivf index on the arg column is taken by the plain query" \
+  same "Index Scan using objects_descr on objects" \
+  "$(q -d $mid -c "CREATE INDEX objects_descr ON objects USING arg_ivf (descr) WITH (lists = 2)" \
+       -c "SET enable_seqscan = off" \
+       -c "EXPLAIN (COSTS OFF) SELECT id FROM objects ORDER BY descr <~> (SELECT descr FROM objects WHERE id = 1) LIMIT 3" |
+     grep -o 'Index Scan using objects_descr on objects')"
+check "it ranks as brute force does (every cell probed)" \
+  same "$(q -d $mid -c "SELECT string_agg(id::text, ',' ORDER BY descr <~> (SELECT descr FROM objects WHERE id = 1), id) FROM objects")" \
+  "$(q -d $mid -c "SET enable_seqscan = off" -c "SET arg.ivf_probes = 2" \
+       -c "SELECT string_agg(id::text, ',') FROM (SELECT id FROM objects ORDER BY descr <~> (SELECT descr FROM objects WHERE id = 1) LIMIT 6) s")"
 
 echo "# $((n - failed)) passed, $failed failed"
 [[ $failed -eq 0 ]]
