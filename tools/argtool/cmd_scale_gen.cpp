@@ -163,7 +163,10 @@ int run_scale_gen(ScaleArgs& a) {
           argtool::Model model;
           argtool::prepare_model(model, (root / m.path).string(), a.options, a.cache, true);
           if (!model.error.empty()) throw std::runtime_error(model.error);
-          rows[k] = metadata(a, std::stoll(m.id)) + m.label + '\t' +
+          // A numeric model_id is the row's id; others (SHREC 2011's T0 ...) get their row number.
+          const bool numeric =
+              !m.id.empty() && m.id.find_first_not_of("0123456789") == std::string::npos;
+          rows[k] = metadata(a, numeric ? std::stoll(m.id) : a.first_id + i) + m.label + '\t' +
                     arg::arg_to_text(arg::serialize_arg(model.graph)) + '\n';
         }
       } catch (const std::exception& e) {
