@@ -16,7 +16,6 @@ extern "C" {
 #include "optimizer/cost.h"
 #include "optimizer/optimizer.h"
 #include "utils/catcache.h"
-#include "utils/float.h"
 #include "utils/lsyscache.h"
 #include "utils/selfuncs.h"
 #include "utils/spccache.h"
@@ -47,16 +46,22 @@ uint32 cells_of(Oid index_oid) {
   return meta.cells;
 }
 
+// Far above any real plan (a disabled one costs 1e10 more than it would) yet finite.
+constexpr Cost kNeverCost = 1.0e15;
+
 // Whether this query level's result is cut by a LIMIT: a constant one the planner took as a
 // hard limit (not LIMIT ALL or NULL; none under grouping, aggregates, window functions,
 // DISTINCT or set-returning functions, which read every row first), or one computed at run
 // time (a generic plan of LIMIT $1, often cast to bigint) under the same conditions.
 bool row_limited(PlannerInfo* root) {
-  if (root->limit_tuples > 0) return true;
   const Query* q = root->parse;
-  return q->limitCount != nullptr && !IsA(q->limitCount, Const) && q->groupClause == NIL &&
-         q->groupingSets == NIL && q->distinctClause == NIL && !q->hasAggs && !q->hasWindowFuncs &&
-         !q->hasTargetSRFs && !root->hasHavingQual;
+  // These read every row before the limit applies (PostgreSQL 17 passes a window's query level
+  // a row limit too).
+  if (q->groupClause != NIL || q->groupingSets != NIL || q->distinctClause != NIL || q->hasAggs ||
+      q->hasWindowFuncs || q->hasTargetSRFs || root->hasHavingQual)
+    return false;
+  if (root->limit_tuples > 0) return true;
+  return q->limitCount != nullptr && !IsA(q->limitCount, Const);
 }
 
 // All of a search's work comes before its first row: the centres, then the probed share of
@@ -67,7 +72,9 @@ void cost_estimate(PlannerInfo* root, IndexPath* path, double loop_count, Cost* 
   // it: without one a query asks for every row in order, which an index that reads some cells
   // cannot give.
   if (list_length(path->indexorderbys) != 1 || !row_limited(root)) {
-    *startup = *total = get_float8_infinity();
+    // A cost no plan reaches, but finite: PostgreSQL 17 subtracts a window's input costs from
+    // each other, and infinity less infinity is NaN, which wins every comparison.
+    *startup = *total = kNeverCost;
     *selectivity = 0;
     *correlation = 0;
     *pages = 0;
