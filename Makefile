@@ -1,10 +1,13 @@
 # arg: the PostgreSQL extension (a PGXS makefile) and the project's top-level targets.
 #
-#   make                     configure CMake once, build the core library, then the extension
-#   make install             install the extension into PostgreSQL 15 (as root, or it uses sudo)
+#   make                     configure CMake once, build the core library and argtool, then the
+#                            extension
+#   make install             install the extension into PostgreSQL (PG_CONFIG's; 15 by default)
+#                            and argtool into $(BINDIR) (as root, or it uses sudo)
 #   make test                install missing packages, build everything, run every test suite
-#   make demo [MODELS=DIR]   ... then rank a sample catalogue (or DIR's meshes) in a throwaway cluster
-#                            and start the catalogue browser beside it (its URL is printed)
+#   make demo [MODELS=DIR]   install only what the demo needs, build only what it runs, then rank a
+#                            sample catalogue (or DIR's meshes, with DIR/catalogue.csv) in a
+#                            throwaway cluster and start the catalogue browser beside it
 #   make demo-stop           stop the demo's browser and cluster
 #   make installcheck        pg_regress (sql/, expected/) against the server in PGHOST/PGPORT
 #   make distclean           stop the clusters and remove the build tree
@@ -12,6 +15,8 @@
 BUILD_DIR ?= build
 CMAKE ?= cmake
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release $(if $(CI),-DARG_WERROR=ON)
+# Where `make install` puts argtool (the Debian package: /usr/bin).
+BINDIR ?= /usr/local/bin
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 # The method library, and the two layers the extension's arg_generate and arg_inspect need (the
 # model generator, the graph's SVG); never the evaluation library (core/libraries.cmake).
@@ -66,7 +71,7 @@ $(BUILD_DIR)/CMakeCache.txt:
 # ARG_NO_CMAKE=1 (used for the sudo install step) takes the library as it is.
 ifneq ($(ARG_NO_CMAKE),1)
 $(CORE_LIB): FORCE | $(BUILD_DIR)/CMakeCache.txt
-	$(CMAKE) --build $(BUILD_DIR) --target argmethod arggen argrender argimage argvdb -j $(JOBS)
+	$(CMAKE) --build $(BUILD_DIR) --target argmethod arggen argrender argimage argvdb argtool -j $(JOBS)
 endif
 $(filter-out $(CORE_LIB),$(CORE_LIBS)): $(CORE_LIB) ;
 
@@ -77,19 +82,26 @@ install: install-plugins
 install-plugins:
 	$(INSTALL_SHLIB) '$(IMAGE_LIB)' '$(DESTDIR)$(pkglibdir)/arg_image$(DLSUFFIX)'
 	$(INSTALL_SHLIB) '$(VDB_LIB)' '$(DESTDIR)$(pkglibdir)/arg_vdb$(DLSUFFIX)'
+	$(MKDIR_P) '$(DESTDIR)$(BINDIR)'
+	$(INSTALL_PROGRAM) '$(BUILD_DIR)/argtool' '$(DESTDIR)$(BINDIR)/argtool'
 
 .PHONY: FORCE
 FORCE:
 
 # Top-level targets --------------------------------------------------------------------------
 
-.PHONY: deps cmake-all build test fuzz demo demo-stop distclean
+.PHONY: deps deps-demo cmake-all build test fuzz demo demo-stop distclean
 
 deps:
 	tools/pg/install_deps.sh
 
-# Every CMake target (core, argtool, unit tests, benchmarks), then the extension.
+deps-demo:
+	tools/pg/install_deps.sh --demo
+
+# Every CMake target (core, argtool, unit tests, benchmarks), then the extension. The tests and
+# benchmarks are switched on here, should a demo have configured the tree without them.
 cmake-all: | $(BUILD_DIR)/CMakeCache.txt
+	$(CMAKE) -S . -B $(BUILD_DIR) -DARG_BUILD_TESTS=ON -DARG_BUILD_BENCH=ON >/dev/null
 	$(CMAKE) --build $(BUILD_DIR) -j $(JOBS)
 
 build: cmake-all
@@ -105,8 +117,12 @@ test: deps
 fuzz: deps
 	FUZZ_SECONDS=$(or $(FUZZ_SECONDS),20) tests/fuzz/run_fuzz.sh
 
-demo: deps
-	$(MAKE) --no-print-directory build
+# The demo builds what it runs (the core's libraries, argtool, the extension): a tree it
+# configures leaves the tests and benchmarks out, which need packages the demo does not install.
+demo: deps-demo
+	test -f $(BUILD_DIR)/CMakeCache.txt || \
+	  $(CMAKE) -S . -B $(BUILD_DIR) $(CMAKE_FLAGS) -DARG_BUILD_TESTS=OFF -DARG_BUILD_BENCH=OFF
+	$(MAKE) --no-print-directory all
 	$(SUDO) $(MAKE) --no-print-directory install ARG_NO_CMAKE=1
 	tools/demo/run.sh $(if $(MODELS),"$(MODELS)")
 

@@ -43,7 +43,7 @@ class Browser:
         with psycopg.connect() as conn:
             self.models: List[Dict[str, Any]] = [
                 dict(zip(("id", "model_id", "title", "class", "file"), row)) for row in conn.execute(
-                    "SELECT id, model_id, title, class, file FROM museum_models ORDER BY id")]
+                    "SELECT id, model_id, title, class, file FROM objects ORDER BY id")]
 
     # --- helpers ------------------------------------------------------------------------------
 

@@ -53,13 +53,13 @@ load_catalogue() {
   "$build/argtool" gen --out "$work/models" --per-class "$per_class" &&
     psql -X -q -v ON_ERROR_STOP=1 -v mode=sample -v dir="$work/models" -v script="$work/import.sql" \
       -v every=1000 -f tools/demo/load.sql <"$work/models/catalogue.csv" &&
-    [[ $(psql -X -tAc 'SELECT count(*) FROM museum_models') -eq \
+    [[ $(psql -X -tAc 'SELECT count(*) FROM objects') -eq \
        $(($(wc -l <"$work/models/catalogue.csv") - 1)) ]]
 }
 
 every_thumbnail() {
   "$python" tools/browser/thumbnails.py --argtool "$build/argtool" &&
-    [[ $(psql -X -tAc "SELECT count(*) FROM museum_models WHERE thumbnail IS NULL
+    [[ $(psql -X -tAc "SELECT count(*) FROM objects WHERE thumbnail IS NULL
                         OR substr(thumbnail, 1, 8) <> '\\x89504e470d0a1a0a'::bytea") -eq 0 ]]
 }
 

@@ -115,7 +115,7 @@ int run_gen(const GenArgs& a) {
   const std::vector<std::string> all = arg::generator_classes();
   const std::vector<std::string>& wanted = a.classes.empty() ? all : a.classes;
 
-  std::string catalogue = "model_id,path,class,inventory_no,title,artist,period,material\n";
+  std::string catalogue = "model_id,path,class,inventory_no,title,artist,period,material,licence\n";
   std::string labels = "model_id,path,class\n";
   std::size_t triangles = 0;
   int written = 0;
@@ -144,7 +144,8 @@ int run_gen(const GenArgs& a) {
       const Provenance& provenance = choices[rng.below(static_cast<int>(choices.size()))];
       catalogue += csv_field(model.name) + ',' + csv_field(path) + ',' + csv_field(label) + ',' +
                    inventory + ',' + csv_field(title) + ',' + csv_field(artist) + ',' +
-                   csv_field(provenance.period) + ',' + csv_field(provenance.material) + '\n';
+                   csv_field(provenance.period) + ',' + csv_field(provenance.material) +
+                   ",CC0 (generated)\n";
       labels += csv_field(model.name) + ',' + csv_field(path) + ',' + csv_field(label) + '\n';
     }
   }

@@ -1,4 +1,4 @@
-"""The browser's reads of the demo's table museum_models: the grid, one object, its thumbnail and graph, rankings."""
+"""The browser's reads of the demo's table objects: the grid, one object, its thumbnail and graph, rankings."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ from psycopg.rows import dict_row
 
 import pgarg
 
-TABLE = "museum_models"
+TABLE = "objects"
 # The metadata a reader can filter on, each a column of the table; the only names that reach SQL.
 FILTERS = ("class", "period", "material", "artist")
 # What a card or a ranked row shows; the mesh, the ARG and the thumbnail stay on the server.

@@ -1,4 +1,4 @@
-"""Renders each model of museum_models without a thumbnail with `argtool render` and stores the PNG in the table."""
+"""Renders each model of objects without a thumbnail with `argtool render` and stores the PNG in the table."""
 
 from __future__ import annotations
 
@@ -13,7 +13,7 @@ from typing import Optional, Tuple
 
 import psycopg
 
-TABLE = "museum_models"
+TABLE = "objects"
 
 
 def render_one(argtool: str, size: int, model_id: int, scratch: Path, timeout: float) -> Tuple[int, Optional[str]]:

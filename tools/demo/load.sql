@@ -1,16 +1,17 @@
--- Loads a catalogue of meshes into museum_models; run by tools/demo/run.sh.
--- stdin: the catalogue CSV (model_id,path,class,inventory_no,title,artist,period,material).
+-- Loads a catalogue of meshes into objects; run by tools/demo/run.sh.
+-- stdin: the catalogue CSV (model_id,path,class,inventory_no,title,artist,period,material,
+-- licence).
 -- Variables: mode (sample|user), dir (base of relative paths), script (a scratch file),
 -- every (a progress line per this many models).
 -- The client reads the mesh files (\lo_import) and sends them: the server never reads the
 -- project's files, it runs as another user.
 
 SET client_min_messages = warning;
-DROP TABLE IF EXISTS museum_models;
+DROP TABLE IF EXISTS objects;
 DROP EXTENSION IF EXISTS arg CASCADE;
 CREATE EXTENSION arg CASCADE;
 
-CREATE TABLE museum_models (
+CREATE TABLE objects (
   id           integer PRIMARY KEY,      -- position in the catalogue
   model_id     text NOT NULL UNIQUE,
   inventory_no text,
@@ -19,6 +20,7 @@ CREATE TABLE museum_models (
   artist       text,
   period       text,
   material     text,
+  licence      text,
   file         text NOT NULL,
   mesh         bytea NOT NULL,
   descr        arg GENERATED ALWAYS AS (arg_build(mesh)) STORED,
@@ -27,9 +29,9 @@ CREATE TABLE museum_models (
 
 CREATE TEMP TABLE catalogue (
   n serial, model_id text, path text, class text, inventory_no text, title text, artist text,
-  period text, material text
+  period text, material text, licence text
 );
-\copy catalogue (model_id, path, class, inventory_no, title, artist, period, material) FROM pstdin WITH (FORMAT csv, HEADER true)
+\copy catalogue (model_id, path, class, inventory_no, title, artist, period, material, licence) FROM pstdin WITH (FORMAT csv, HEADER true)
 
 SELECT count(*) AS total FROM catalogue \gset
 
@@ -40,8 +42,8 @@ SELECT count(*) AS total FROM catalogue \gset
 \o :script
 SELECT format(E'\\lo_import %s\n'
               '\\set lo :LASTOID\n'
-              'INSERT INTO museum_models (id, model_id, inventory_no, title, class, artist, period, material, file, mesh)\n'
-              '  SELECT n, model_id, inventory_no, title, class, artist, period, material, %L, lo_get(:lo)\n'
+              'INSERT INTO objects (id, model_id, inventory_no, title, class, artist, period, material, licence, file, mesh)\n'
+              '  SELECT n, model_id, inventory_no, title, class, artist, period, material, licence, %L, lo_get(:lo)\n'
               '  FROM catalogue WHERE n = %s;\n'
               '%s'
               'SELECT lo_unlink(:lo) \\g /dev/null\n'
@@ -74,5 +76,5 @@ SELECT :'mode' = 'user' AS skip_failures \gset
 \i :script
 \set ON_ERROR_STOP 1
 
-SELECT count(*) AS loaded FROM museum_models \gset
+SELECT count(*) AS loaded FROM objects \gset
 \echo 'demo:' :loaded 'of' :total 'models loaded'

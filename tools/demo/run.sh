@@ -3,7 +3,9 @@
 # and a web browser of the catalogue.
 #
 #   tools/demo/run.sh          the sample catalogue made by `argtool gen` (about 40 models)
-#   tools/demo/run.sh DIR      every .off .obj .ply .stl .glb file under DIR instead
+#   tools/demo/run.sh DIR      every .off .obj .ply .stl .glb file under DIR instead, with the
+#                              metadata of DIR/catalogue.csv when there is one
+#                              (tools/demo/catalogue.py)
 #
 # Environment: BUILD_DIR (default build), QUERY (model_id to rank against, default the first one),
 # DEMO_ROWS (rows to print, default 15), DEMO_PER_CLASS (sample models per class, default 5),
@@ -22,7 +24,8 @@ python=${ARG_PYTHON:-/usr/bin/python3}
 mkdir -p "$work"
 work=$(cd "$work" && pwd -P)
 
-# The catalogue: CSV with header model_id,path,class,inventory_no,title,artist,period,material.
+# The catalogue: CSV with header model_id,path,class,inventory_no,title,artist,period,material,
+# licence.
 if [[ -z "$models_dir" ]]; then
   mode=sample
   rm -rf "$work/models"
@@ -35,19 +38,9 @@ else
   [[ -d "$models_dir" ]] || { echo "demo: MODELS=$models_dir is not a directory" >&2; exit 1; }
   base=$(cd "$models_dir" && pwd -P)
   catalogue=$work/user_catalogue.csv
-  echo "model_id,path,class,inventory_no,title,artist,period,material" >"$catalogue"
-  csv() { local q='"'; printf '"%s"' "${1//$q/$q$q}"; }  # a quoted CSV field
-  n=0
-  while IFS= read -r -d '' file; do
-    name=$(basename "$file")
-    n=$((n + 1))
-    # model_id: the path under DIR without extension; title: the file name without extension.
-    rel=${file#"$base"/}
-    echo "$(csv "${rel%.*}"),$(csv "$file"),,,$(csv "${name%.*}"),,," >>"$catalogue"
-  done < <(find "$base" -type f \( -iname '*.off' -o -iname '*.obj' -o -iname '*.ply' \
-    -o -iname '*.stl' -o -iname '*.glb' \) ! -name $'*\n*' -print0 | sort -z)
-  [[ $n -gt 0 ]] || { echo "demo: no .off .obj .ply .stl or .glb files under $base" >&2; exit 1; }
-  echo "demo: $n mesh files under $base"
+  "$python" tools/demo/catalogue.py "$base" >"$catalogue" ||
+    { echo "demo: no .off .obj .ply .stl or .glb files under $base" >&2; exit 1; }
+  echo "demo: $(($(wc -l <"$catalogue") - 1)) mesh files under $base"
 fi
 
 tools/pg/cluster.sh start "$pgdir"
@@ -56,7 +49,7 @@ source "$pgdir/env"
 psql -X -q -d postgres -tAc "SELECT 1 FROM pg_database WHERE datname = 'museum'" | grep -q 1 ||
   psql -X -q -d postgres -c 'CREATE DATABASE museum'
 
-echo "demo: loading the catalogue into table museum_models (database museum)"
+echo "demo: loading the catalogue into table objects (database museum)"
 # For a user's folder, each file that fails is reported on one line by load.sql; psql's own copy
 # of the error goes to a log.
 if [[ $mode == user ]]; then exec 3>"$work/load-errors.log"; else exec 3>&2; fi
@@ -67,7 +60,7 @@ psql -X -q -d museum -v ON_ERROR_STOP=1 -v mode="$mode" -v dir="$base" \
   exit 1
 }
 exec 3>&-
-if [[ $(psql -X -q -d museum -tAc 'SELECT count(*) FROM museum_models') -eq 0 ]]; then
+if [[ $(psql -X -q -d museum -tAc 'SELECT count(*) FROM objects') -eq 0 ]]; then
   echo "demo: no model could be loaded" >&2
   exit 1
 fi
@@ -79,7 +72,7 @@ keep_going=()
 PGDATABASE=museum "$python" tools/browser/thumbnails.py --argtool "$build/argtool" "${keep_going[@]}"
 
 if [[ -n "${QUERY:-}" ]] && [[ -z $(psql -X -q -d museum -v q="$QUERY" -tA \
-  <<<"SELECT 1 FROM museum_models WHERE model_id = :'q'") ]]; then
+  <<<"SELECT 1 FROM objects WHERE model_id = :'q'") ]]; then
   echo "demo: QUERY=$QUERY is not a model_id of the catalogue" >&2
   exit 1
 fi
@@ -92,8 +85,12 @@ tools/browser/server.sh start "$pgdir"
 
 cat <<EOF
 
-The demo cluster is still running (data in $pgdir). Connect with:
-  psql -h localhost -p $PGPORT -U postgres museum
+The demo cluster is still running (data in $pgdir): database museum, table objects, on
+localhost port $PGPORT (no Unix socket). Set the connection in your shell first (PGHOST, PGPORT,
+PGUSER, which psql and every libpq client read), then use it:
+  source $(cd "$pgdir" && pwd -P)/env
+  psql museum -c 'SELECT title, period FROM objects LIMIT 5'
+  python3 -c 'import psycopg; print(psycopg.connect(dbname="museum").execute("SELECT count(*) FROM objects").fetchone())'
 Browse the catalogue (this machine only): $(tools/browser/server.sh url "$pgdir")
 Stop both with: make demo-stop
 EOF

@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the project needs, only when one of them is missing.
+#
+#   tools/pg/install_deps.sh          what every test needs (make test)
+#   tools/pg/install_deps.sh --demo   only what the demo builds and runs (make demo): no test
+#                                     tools, sanitizers, fuzzers or browser for tests
+#
 # Runs apt-get update first; uses sudo only when not root. ARG_SKIP_DEPS=1 skips the check.
 set -euo pipefail
 
-packages=(
-  # server, headers for PGXS, contrib, pgTAP and pg_prove
-  postgresql-15 postgresql-server-dev-15 postgresql-contrib postgresql-15-pgtap
-  libtap-parser-sourcehandler-pgtap-perl
+demo_packages=(
+  # server, headers for PGXS, contrib (cube)
+  postgresql-15 postgresql-server-dev-15 postgresql-contrib
   # core libraries (zlib checks PNG chunk checksums; tinygltf's header needs nlohmann-json and stb, which its package does not pull in)
   libeigen3-dev libopenmesh-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libopenimageio-dev
   libcli11-dev zlib1g-dev
@@ -14,19 +18,26 @@ packages=(
   libopenvdb-dev libboost-dev libtbb-dev
   # Spectra (header-only eigen-solver of the Laplace-Beltrami spectrum)
   libspectra-dev
-  # build and test tools
-  cmake g++ make clang-format libgtest-dev libbenchmark-dev
-  # the Python client (clients/python) and its tests: Debian's packages, as PyPI is not used
-  python3-psycopg python3-numpy python3-pytest
-  # the catalogue browser (tools/browser) and its test in headless Chromium (tests/browser;
-  # Pillow decodes the test's screenshot)
-  python3-fastapi python3-uvicorn python3-multipart python3-jinja2
-  python3-selenium chromium chromium-driver python3-pil
+  # build tools
+  cmake g++ make
+  # the Python client (clients/python) and the catalogue browser (tools/browser): Debian's
+  # packages, as PyPI is not used
+  python3-psycopg python3-numpy python3-fastapi python3-uvicorn python3-multipart python3-jinja2
+)
+test_packages=(
+  # pgTAP and pg_prove
+  postgresql-15-pgtap libtap-parser-sourcehandler-pgtap-perl
+  # unit tests, benchmarks, formatting
+  clang-format libgtest-dev libbenchmark-dev
+  # the client's tests; the browser's test in headless Chromium (Pillow decodes its screenshot)
+  python3-pytest python3-selenium chromium chromium-driver python3-pil
   # libFuzzer targets and the sanitizer runtimes (tests/fuzz)
   clang libclang-rt-14-dev
 )
 
 if [[ "${ARG_SKIP_DEPS:-0}" == 1 ]]; then exit 0; fi
+packages=("${demo_packages[@]}")
+[[ "${1:-}" == --demo ]] || packages+=("${test_packages[@]}")
 
 missing=()
 for p in "${packages[@]}"; do
