@@ -54,12 +54,21 @@ VDB_LIB = $(BUILD_DIR)/arg_vdb$(DLSUFFIX)
 override with_llvm := no
 override autodepend := yes
 
+# The PostgreSQL versions whose server API extension/ is written and tested against: 15 and 17
+# (make test runs the SQL suites on both), 16 between them (compiled, not tested).
+SUPPORTED_PG := 15 16 17
 ifneq ($(PG_CONFIG),)
+PG_MAJOR := $(shell $(PG_CONFIG) --version | sed -E 's/^PostgreSQL ([0-9]+).*/\1/')
+ifeq ($(filter $(SUPPORTED_PG),$(PG_MAJOR)),)
+ifeq ($(filter deps deps-demo distclean demo-stop,$(MAKECMDGOALS)),)
+$(error arg supports PostgreSQL $(SUPPORTED_PG); $(PG_CONFIG) is PostgreSQL $(PG_MAJOR): set PG_CONFIG to the pg_config of a supported server)
+endif
+endif
 PGXS := $(shell $(PG_CONFIG) --pgxs)
 include $(PGXS)
 else
 all install installcheck:
-	@echo "pg_config (PostgreSQL 15) not found: run 'make deps' (or 'make test'/'make demo') first" >&2
+	@echo "pg_config (PostgreSQL 15 or 17) not found: run 'make deps' (or 'make test'/'make demo') first" >&2
 	@exit 1
 endif
 

@@ -30,7 +30,16 @@ extern "C" {
 
 #include "fmgr.h"
 #include "miscadmin.h"
+#if PG_VERSION_NUM >= 160000
+#include "varatt.h"  // the varlena macros left postgres.h in PostgreSQL 16
+#endif
 }
+
+// The versions whose server API this glue is written and tested against (the Makefile refuses
+// others before compiling; this catches a build that bypasses it).
+#if PG_VERSION_NUM < 150000 || PG_VERSION_NUM >= 180000
+#error "arg supports PostgreSQL 15, 16 and 17"
+#endif
 
 namespace argpg {
 

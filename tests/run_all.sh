@@ -5,6 +5,8 @@
 #   argtool     tests/argtool/cli.sh: fast start, images loaded on demand, progress in a log file
 #   stages      tests/layering/check_stages.sh: core/stages.cmake refuses includes against the
 #               stage order (and passes on the tree)
+#   versions    tests/versions/unsupported.sh: a build against PostgreSQL 14 or 18 stops at once,
+#               naming the supported versions
 #   regression  pg_regress on sql/ + expected/ (make installcheck)
 #   pgtap       pg_prove on tests/pgtap/*.sql (04_reference.sql: docs/REFERENCE.md covers the SQL
 #               objects, settings and SQLSTATEs)
@@ -20,10 +22,16 @@
 #   server log  no backend of the throwaway cluster died ("terminated by signal") during the above,
 #               read where tools/pg/cluster.sh log-path says the log is; and a test of that check
 #   shards      tests/scale/shards.sh: postgres_fdw, a coordinator and two shards (its own clusters)
+#   pg17        tests/versions/pg17.sh: the SQL suites above (regression to out of memory) against
+#               PostgreSQL 17, built and run in a Debian 13 root made from Debian's archive
 #   sanitizers  the unit tests again, built with ASan + UBSan in build-asan/
 #   fuzz        every libFuzzer target for FUZZ_SECONDS (default 20) seconds from the fixed seed
 #               FUZZ_SEED (default 1), so the run is repeatable (clang, build-fuzz/)
 # ARG_QUICK=1 skips the sanitizer build and the fuzz run (the slow part: about 15 minutes).
+# ARG_SUITES=sql runs only the suites on the throwaway cluster that test the extension in SQL
+# (pg_regress, pgTAP, reference examples, round trips, upgrade, cancellation, out of memory,
+# server log): what tests/versions/pg17.sh runs against another PostgreSQL. PG_CONFIG picks the
+# server (default PostgreSQL 15's).
 # The SQL suites run on a throwaway cluster that this script starts and always stops. A suite that
 # cannot run at all counts as one failure, never as zero tests. Exits non-zero on any failure.
 # Expects the build and `make install` done (make test does both first).
@@ -136,7 +144,11 @@ line_suite() {
   suite "$1" "$passed" "$failed"
 }
 
+sql_only=0
+[[ "${ARG_SUITES:-all}" == sql ]] && sql_only=1
+
 # --- unit tests -----------------------------------------------------------------------------
+if [[ $sql_only -eq 0 ]]; then
 banner "unit tests (googletest)"
 gtest_shards "unit tests (googletest)" "$build" unit
 
@@ -147,6 +159,9 @@ tap_script "argtool command line" argtool 1 tests/argtool/cli.sh "$build/argtool
 # --- the core's stage order ------------------------------------------------------------------
 banner "core stage order"
 tap_script "core stage order" layering 1 tests/layering/check_stages.sh
+banner "unsupported PostgreSQL versions"
+tap_script "unsupported PostgreSQL versions" unsupported 1 tests/versions/unsupported.sh
+fi
 
 # --- the throwaway cluster ------------------------------------------------------------------
 banner "throwaway cluster"
@@ -169,13 +184,14 @@ banner "regression tests (pg_regress)"
 if [[ $cluster_up -eq 1 ]]; then
   make --no-print-directory installcheck 2>&1 | tee "$logs/regress.log"
   rc=${PIPESTATUS[0]}
-  # PostgreSQL 15 prints "All 3 tests passed." or "2 of 3 tests failed." (maybe with "(n failed but ignored)").
-  all=$(count "$logs/regress.log" '^ *All ([0-9]+) tests passed.*')
+  # PostgreSQL 15 prints "All 3 tests passed." or "2 of 3 tests failed." (maybe with "(n failed
+  # but ignored)"); PostgreSQL 17 the same after "# ".
+  all=$(count "$logs/regress.log" '^#? *All ([0-9]+) tests passed.*')
   if [[ -n "$all" ]]; then
     failed=0
   else
-    failed=$(count "$logs/regress.log" '^ *([0-9]+) of [0-9]+ tests failed.*')
-    all=$(count "$logs/regress.log" '^ *[0-9]+ of ([0-9]+) tests failed.*')
+    failed=$(count "$logs/regress.log" '^#? *([0-9]+) of [0-9]+ tests failed.*')
+    all=$(count "$logs/regress.log" '^#? *[0-9]+ of ([0-9]+) tests failed.*')
   fi
   if [[ -z "$all" || -z "$failed" ]]; then
     suite "regression tests (pg_regress)" 0 1
@@ -218,6 +234,7 @@ banner "out of memory (prlimit on one backend)"
 tap_script "out of memory" oom "$cluster_up" tests/oom/out_of_memory.sh
 
 # --- the Python client, on the same cluster ---------------------------------------------------
+if [[ $sql_only -eq 0 ]]; then
 banner "python client (pytest)"
 # Debian's interpreter, which sees the python3-psycopg, -numpy and -pytest packages (another
 # python3 may come first on PATH).
@@ -239,6 +256,7 @@ fi
 # --- the catalogue browser in headless Chromium, on the same cluster ------------------------
 banner "catalogue browser (chromium)"
 tap_script "catalogue browser (chromium)" browser "$cluster_up" tests/browser/run_browser_tests.sh
+fi
 
 # --- the server survived everything above ---------------------------------------------------
 banner "server log"
@@ -255,15 +273,37 @@ else
   echo "server log: the cluster did not start, so there is no log to check"
   suite "server log: no crash" 0 1
 fi
-tap_script "server log check (self-test)" server_log_check 1 tests/server_log/check_test.sh
+[[ $sql_only -eq 0 ]] &&
+  tap_script "server log check (self-test)" server_log_check 1 tests/server_log/check_test.sh
 
 # Stop the cluster before the summary so that the summary stays the last line.
 tools/pg/cluster.sh stop "$pgdir" --remove || suite "cluster shutdown" 0 1
 trap - EXIT
 
+if [[ $sql_only -eq 1 ]]; then
+  banner "summary"
+  printf '%s\n' "${summary[@]}"
+  echo "$total_pass passed, $total_fail failed"
+  [[ $total_fail -eq 0 ]]
+  exit
+fi
+
 # --- sharding with postgres_fdw (three clusters of its own) ---------------------------------
 banner "shards (postgres_fdw)"
 tap_script "shards (postgres_fdw)" shards 1 tests/scale/shards.sh
+
+# --- the SQL suites against PostgreSQL 17, in a Debian 13 root --------------------------------
+banner "PostgreSQL 17 (Debian 13 root)"
+tests/versions/pg17.sh 2>&1 | tee "$logs/pg17.log"
+pg17_status=${PIPESTATUS[0]}
+pg17_pass=$(count "$logs/pg17.log" '^([0-9]+) passed, [0-9]+ failed$')
+pg17_fail=$(count "$logs/pg17.log" '^[0-9]+ passed, ([0-9]+) failed$')
+if [[ -z "$pg17_pass" ]]; then
+  suite "PostgreSQL 17: SQL suites" 0 1
+else
+  [[ $pg17_status -ne 0 && $pg17_fail -eq 0 ]] && pg17_fail=1
+  suite "PostgreSQL 17: SQL suites" "$pg17_pass" "$pg17_fail"
+fi
 
 # --- sanitizers and fuzz smoke (skipped with ARG_QUICK=1) -------------------------------------
 if [[ "${ARG_QUICK:-0}" == 1 ]]; then

@@ -64,6 +64,9 @@ SELECT CASE d.classid
        pg_describe_object(d.classid, d.objid, d.objsubid) AS what
 FROM pg_depend d JOIN pg_extension e ON e.oid = d.refobjid
 WHERE d.refclassid = 'pg_extension'::regclass AND d.deptype = 'e' AND e.extname = 'arg'
+  -- A type's array type comes with it (PostgreSQL 17 makes it a member of the extension too).
+  AND NOT EXISTS (SELECT FROM pg_type t WHERE d.classid = 'pg_type'::regclass AND t.oid = d.objid
+                    AND t.typcategory = 'A' AND t.typelem <> 0)
 UNION ALL
 SELECT 'Settings', name, 'setting ' || name FROM pg_settings WHERE name LIKE 'arg.%'
 UNION ALL

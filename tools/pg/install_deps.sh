@@ -33,6 +33,8 @@ test_packages=(
   python3-pytest python3-selenium chromium chromium-driver python3-pil
   # libFuzzer targets and the sanitizer runtimes (tests/fuzz)
   clang libclang-rt-14-dev
+  # Debian roots for PostgreSQL 17 (Debian 13) and the packages' clean installs (tools/pg/root.sh)
+  debootstrap
 )
 
 if [[ "${ARG_SKIP_DEPS:-0}" == 1 ]]; then exit 0; fi
