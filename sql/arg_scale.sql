@@ -169,6 +169,25 @@ SELECT count(*) FROM arg_knn(NULL::museum_objects, 'class', :'q');
 SELECT count(*) FROM arg_knn(NULL::museum_objects, 'descr', :'q', descriptor => 'descr');
 SELECT count(*) FROM arg_knn(NULL::museum_objects, 'descr', :'q', 0);
 SELECT count(*) AS still_there FROM museum_objects;
+
+-- A role that may create objects in public cannot plant one that arg_knn calls: arg_knn's
+-- search_path is pg_catalog, pg_temp and it names arg's and cube's objects with their schema.
+-- The planted format(text, name) is a closer match than the built-in format(text, VARIADIC
+-- "any") wherever public is searched (shown last), and arg_knn calls format with a name.
+CREATE ROLE arg_planter;
+GRANT CREATE ON SCHEMA public TO arg_planter;
+SET ROLE arg_planter;
+CREATE FUNCTION public.format(text, name) RETURNS text LANGUAGE plpgsql
+  AS $$ BEGIN RAISE EXCEPTION 'the planted format ran as %', current_user; END $$;
+RESET ROLE;
+SELECT count(*) AS knn_rows_without_the_plant
+FROM arg_knn(NULL::museum_objects, 'descr', :'q', 3, descriptor => 'glob');
+SET search_path = public, pg_catalog;
+SELECT format('%I', 'descr'::name);
+RESET search_path;
+DROP FUNCTION public.format(text, name);
+REVOKE CREATE ON SCHEMA public FROM arg_planter;
+DROP ROLE arg_planter;
 \set VERBOSITY default
 
 -- With btree_gist, one GiST index holds the filter column and the descriptor, so a selective
