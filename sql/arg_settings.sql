@@ -109,3 +109,18 @@ SELECT 'still answering' AS session;
 
 DROP TABLE big, few, with_cache, weighed;
 DROP EXTENSION arg;
+
+-- The extension is trusted: a role that may create in the database (a database owner, say)
+-- installs it without being a superuser, and owns it; the caps stay a superuser's to change.
+CREATE ROLE arg_owner;
+DO $$ BEGIN EXECUTE format('GRANT CREATE ON DATABASE %I TO arg_owner', current_database()); END $$;
+SET ROLE arg_owner;
+CREATE EXTENSION arg;
+SELECT r.rolname AS owner, r.rolsuper AS superuser
+FROM pg_extension e JOIN pg_roles r ON r.oid = e.extowner WHERE e.extname = 'arg';
+SELECT arg_version() LIKE 'arg %' AS loads;
+SET arg.max_input_size = '1GB';
+DROP EXTENSION arg;
+RESET ROLE;
+DO $$ BEGIN EXECUTE format('REVOKE CREATE ON DATABASE %I FROM arg_owner', current_database()); END $$;
+DROP ROLE arg_owner;
