@@ -9,14 +9,18 @@
 #                            sample catalogue (or DIR's meshes, with DIR/catalogue.csv) in a
 #                            throwaway cluster and start the catalogue browser beside it
 #   make demo-stop           stop the demo's browser and cluster
+#   make deb                 Debian packages postgresql-<major>-arg and argtool (tools/deb) in
+#                            $(BUILD_DIR)/deb, for the PostgreSQL of PG_CONFIG
 #   make installcheck        pg_regress (sql/, expected/) against the server in PGHOST/PGPORT
 #   make distclean           stop the clusters and remove the build tree
 
 BUILD_DIR ?= build
 CMAKE ?= cmake
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release $(if $(CI),-DARG_WERROR=ON)
-# Where `make install` puts argtool (the Debian package: /usr/bin).
+# Where `make install` puts argtool (the Debian package: /usr/bin), and its plug-ins beside it
+# (lib/argtool: argtool looks there).
 BINDIR ?= /usr/local/bin
+ARGTOOL_LIBDIR = $(patsubst %/bin,%/lib/argtool,$(BINDIR))
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 # The method library, and the two layers the extension's arg_generate and arg_inspect need (the
 # model generator, the graph's SVG); never the evaluation library (core/libraries.cmake).
@@ -91,15 +95,17 @@ install: install-plugins
 install-plugins:
 	$(INSTALL_SHLIB) '$(IMAGE_LIB)' '$(DESTDIR)$(pkglibdir)/arg_image$(DLSUFFIX)'
 	$(INSTALL_SHLIB) '$(VDB_LIB)' '$(DESTDIR)$(pkglibdir)/arg_vdb$(DLSUFFIX)'
-	$(MKDIR_P) '$(DESTDIR)$(BINDIR)'
+	$(MKDIR_P) '$(DESTDIR)$(BINDIR)' '$(DESTDIR)$(ARGTOOL_LIBDIR)'
 	$(INSTALL_PROGRAM) '$(BUILD_DIR)/argtool' '$(DESTDIR)$(BINDIR)/argtool'
+	$(INSTALL_SHLIB) '$(IMAGE_LIB)' '$(DESTDIR)$(ARGTOOL_LIBDIR)/arg_image$(DLSUFFIX)'
+	$(INSTALL_SHLIB) '$(VDB_LIB)' '$(DESTDIR)$(ARGTOOL_LIBDIR)/arg_vdb$(DLSUFFIX)'
 
 .PHONY: FORCE
 FORCE:
 
 # Top-level targets --------------------------------------------------------------------------
 
-.PHONY: deps deps-demo cmake-all build test fuzz demo demo-stop distclean
+.PHONY: deps deps-demo cmake-all build test fuzz demo demo-stop deb distclean
 
 deps:
 	tools/pg/install_deps.sh
@@ -134,6 +140,9 @@ demo: deps-demo
 	$(MAKE) --no-print-directory all
 	$(SUDO) $(MAKE) --no-print-directory install ARG_NO_CMAKE=1
 	tools/demo/run.sh $(if $(MODELS),"$(MODELS)")
+
+deb:
+	tools/deb/build.sh
 
 demo-stop:
 	tools/browser/server.sh stop $(BUILD_DIR)/pg-demo

@@ -24,6 +24,8 @@
 #   shards      tests/scale/shards.sh: postgres_fdw, a coordinator and two shards (its own clusters)
 #   pg17        tests/versions/pg17.sh: the SQL suites above (regression to out of memory) against
 #               PostgreSQL 17, built and run in a Debian 13 root made from Debian's archive
+#   packages    make deb here and in the Debian 13 root, each package installed with apt-get into
+#               a clean root that has only its PostgreSQL (tests/packages/deb_install.sh)
 #   sanitizers  the unit tests again, built with ASan + UBSan in build-asan/
 #   fuzz        every libFuzzer target for FUZZ_SECONDS (default 20) seconds from the fixed seed
 #               FUZZ_SEED (default 1), so the run is repeatable (clang, build-fuzz/)
@@ -47,8 +49,11 @@ total_pass=0 total_fail=0
 summary=()
 
 # Records one suite's counts: suite NAME PASSED FAILED.
+# Each suite's line says how long it took since the previous one ended (its set-up included).
+last_end=$SECONDS
 suite() {
-  summary+=("$(printf '  %-32s %s passed, %s failed' "$1" "$2" "$3")")
+  summary+=("$(printf '  %-32s %s passed, %s failed  (%d s)' "$1" "$2" "$3" $((SECONDS - last_end)))")
+  last_end=$SECONDS
   total_pass=$((total_pass + $2))
   total_fail=$((total_fail + $3))
 }
@@ -146,6 +151,18 @@ line_suite() {
 
 sql_only=0
 [[ "${ARG_SUITES:-all}" == sql ]] && sql_only=1
+
+# The Debian 13 root for the PostgreSQL 17 suites is made and built in the background meanwhile
+# (debootstrap and apt mostly wait on the network); its suites run after the shards.
+# So are the clean roots the packages are installed into.
+if [[ $sql_only -eq 0 ]]; then
+  tests/versions/pg17.sh prepare >"$logs/pg17-prepare.log" 2>&1 &
+  pg17_prepare=$!
+  tests/packages/deb_install.sh prepare 15 >"$logs/clean15-prepare.log" 2>&1 &
+  clean15_prepare=$!
+  tests/packages/deb_install.sh prepare 17 >"$logs/clean17-prepare.log" 2>&1 &
+  clean17_prepare=$!
+fi
 
 # --- unit tests -----------------------------------------------------------------------------
 if [[ $sql_only -eq 0 ]]; then
@@ -294,6 +311,7 @@ tap_script "shards (postgres_fdw)" shards 1 tests/scale/shards.sh
 
 # --- the SQL suites against PostgreSQL 17, in a Debian 13 root --------------------------------
 banner "PostgreSQL 17 (Debian 13 root)"
+wait "$pg17_prepare" || echo "pg17: the root or its build failed in the background ($logs/pg17-prepare.log); trying again"
 tests/versions/pg17.sh 2>&1 | tee "$logs/pg17.log"
 pg17_status=${PIPESTATUS[0]}
 pg17_pass=$(count "$logs/pg17.log" '^([0-9]+) passed, [0-9]+ failed$')
@@ -303,6 +321,26 @@ if [[ -z "$pg17_pass" ]]; then
 else
   [[ $pg17_status -ne 0 && $pg17_fail -eq 0 ]] && pg17_fail=1
   suite "PostgreSQL 17: SQL suites" "$pg17_pass" "$pg17_fail"
+fi
+
+# --- Debian packages, installed into clean roots --------------------------------------------
+banner "Debian packages for PostgreSQL 15 (Debian 12)"
+wait "$clean15_prepare"
+if make --no-print-directory deb >"$logs/deb15.log" 2>&1; then
+  tap_script "package on PostgreSQL 15, clean Debian 12" deb15-install 1 \
+    tests/packages/deb_install.sh 15 "$build/deb"
+else
+  tail -n 20 "$logs/deb15.log"
+  suite "package on PostgreSQL 15, clean Debian 12" 0 1
+fi
+banner "Debian packages for PostgreSQL 17 (Debian 13)"
+wait "$clean17_prepare"
+if tests/versions/pg17.sh deb >"$logs/deb17.log" 2>&1; then
+  tap_script "package on PostgreSQL 17, clean Debian 13" deb17-install 1 \
+    tests/packages/deb_install.sh 17 "$(dirname "$(grep -m1 'postgresql-17-arg_' "$logs/deb17.log")")"
+else
+  tail -n 20 "$logs/deb17.log"
+  suite "package on PostgreSQL 17, clean Debian 13" 0 1
 fi
 
 # --- sanitizers and fuzz smoke (skipped with ARG_QUICK=1) -------------------------------------
@@ -334,5 +372,6 @@ fi
 
 banner "summary"
 printf '%s\n' "${summary[@]}"
+echo "(run_all took $((SECONDS / 60)) min $((SECONDS % 60)) s)"
 echo "$total_pass passed, $total_fail failed"
 [[ $total_fail -eq 0 ]]

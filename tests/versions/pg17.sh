@@ -8,6 +8,9 @@
 #
 #   tests/versions/pg17.sh prepare   make the root and build there (no test); for a head start
 #   tests/versions/pg17.sh           prepare if needed, then run the suites
+#   tests/versions/pg17.sh deb       prepare if needed, then `make deb` in the root: the
+#                                    packages for PostgreSQL 17 on Debian 13, in
+#                                    ROOT/src/build-pg17/deb (their paths are printed)
 #
 # Environment: ARG_ROOTS (default build/roots), BUILD_DIR of the outer build (default build);
 # the build inside the root goes to build-pg17/.
@@ -26,6 +29,8 @@ packages=(
   libeigen3-dev libopenmesh-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libopenimageio-dev
   libcli11-dev zlib1g-dev libopenvdb-dev libboost-dev libtbb-dev libspectra-dev
   cmake g++ make
+  # make deb
+  build-essential debhelper dpkg-dev postgresql-server-dev-all
 )
 
 prepare() {
@@ -54,6 +59,13 @@ mkdir -p "$roots"
 if [[ "${1:-}" == prepare ]]; then
   prepare
   exit
+fi
+if [[ "${1:-}" == deb ]]; then
+  prepare || exit 1
+  tools/pg/root.sh run "$root" -- sh -c "
+    cd '$src' && make --no-print-directory BUILD_DIR=$inner_build PG_CONFIG=$pg_config deb
+  " | sed "s|^$src/|$root$src/|"
+  exit "${PIPESTATUS[0]}"
 fi
 # Again after a head start: an up-to-date build costs seconds.
 prepare || { echo "0 passed, 1 failed"; exit 1; }

@@ -9,6 +9,7 @@
 int main(int argc, char** argv) {
   argtool::register_lazy_plugins();
   CLI::App app{"argtool: Augmented Reeb Graphs for 3D shape retrieval"};
+  app.set_version_flag("--version", std::string("argtool ") + ARG_VERSION);
   app.require_subcommand(1);
   std::map<std::string, std::function<int()>> runners;
   for (auto& command : argtool::commands()) {

@@ -38,12 +38,20 @@ Plugin image_plugin{"arg_image.so",
                     {}};
 Plugin vdb_plugin{"arg_vdb.so", "ARG_VDB_LIBRARY", {"arg_vdb_distance_field"}, {}, {}, {}};
 
+// The variable's path; else the file beside the program (a build tree); else in lib/argtool
+// beside the program's bin (an installed argtool: /usr/bin and /usr/lib/argtool).
 std::string plugin_path(const Plugin& plugin) {
   if (const char* path = std::getenv(plugin.variable); path != nullptr && *path != '\0')
     return path;
   std::error_code failed;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", failed);
-  return ((failed ? std::filesystem::path(".") : self.parent_path()) / plugin.file).string();
+  const std::filesystem::path dir = failed ? std::filesystem::path(".") : self.parent_path();
+  const std::filesystem::path beside = dir / plugin.file;
+  const std::filesystem::path installed = dir.parent_path() / "lib" / "argtool" / plugin.file;
+  return (std::filesystem::exists(beside, failed) || !std::filesystem::exists(installed, failed)
+              ? beside
+              : installed)
+      .string();
 }
 
 // The address of the plug-in's `index`-th function; throws, naming the file, if it cannot be

@@ -35,6 +35,8 @@ test_packages=(
   clang libclang-rt-14-dev
   # Debian roots for PostgreSQL 17 (Debian 13) and the packages' clean installs (tools/pg/root.sh)
   debootstrap
+  # make deb: Debian's tools for packages of PostgreSQL extensions
+  build-essential debhelper dpkg-dev postgresql-server-dev-all
 )
 
 if [[ "${ARG_SKIP_DEPS:-0}" == 1 ]]; then exit 0; fi

@@ -78,6 +78,10 @@ case "$action" in
         tail -n 20 "$dir.debootstrap.log" >&2
         exit 1
       }
+      # As a Debian machine is set up: the release, its updates and its security fixes.
+      printf 'deb %s %s main\ndeb %s %s-updates main\ndeb %s-security %s-security main\n' \
+        "$mirror" "$suite" "$mirror" "$suite" "$mirror" "$suite" |
+        "${sudo[@]}" tee "$dir/etc/apt/sources.list" >/dev/null
     fi
     [[ $# -gt 0 ]] || exit 0
     missing=()
