@@ -3,6 +3,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -49,8 +50,44 @@ bool no_write_file(std::string* error, const std::string&, const std::vector<uns
   if (error) *error = "external files are not supported";
   return false;
 }
-const tinygltf::FsCallbacks kNoFileSystem{&no_file_exists, &no_expand_path, &no_read_file,
-                                          &no_write_file, nullptr};
+bool no_file_size(std::size_t*, std::string* error, const std::string&, void*) {
+  if (error) *error = "external files are not supported";
+  return false;
+}
+
+// tinygltf 2.9 (Debian 13) added GetFileSizeInBytes to its callbacks and refuses callbacks with
+// a null one; 2.8 (Debian 12) has no such member.
+template <class Callbacks>
+auto set_file_size(Callbacks& fs, int) -> decltype(fs.GetFileSizeInBytes = &no_file_size, void()) {
+  fs.GetFileSizeInBytes = &no_file_size;
+}
+template <class Callbacks>
+void set_file_size(Callbacks&, long) {}
+
+tinygltf::FsCallbacks no_file_system() {
+  tinygltf::FsCallbacks fs{};  // every member null first, whatever a version adds
+  fs.FileExists = &no_file_exists;
+  fs.ExpandFilePath = &no_expand_path;
+  fs.ReadWholeFile = &no_read_file;
+  fs.WriteWholeFile = &no_write_file;
+  set_file_size(fs, 0);
+  fs.user_data = nullptr;
+  return fs;
+}
+
+// Installs the callbacks: 2.9 says whether it took them (it keeps its own file system when it
+// does not), 2.8 takes them and says nothing.
+template <class Loader>
+auto install_callbacks(Loader& loader, int)
+    -> decltype(bool(loader.SetFsCallbacks(no_file_system(), nullptr))) {
+  std::string error;
+  return loader.SetFsCallbacks(no_file_system(), &error);
+}
+template <class Loader>
+bool install_callbacks(Loader& loader, long) {
+  loader.SetFsCallbacks(no_file_system());
+  return true;
+}
 
 Eigen::Matrix4d local_transform(const tinygltf::Node& node, const std::string& what) {
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
@@ -352,7 +389,8 @@ void read_glb(std::string_view bytes, SoupBuilder& out, ReadReport& report) {
   report.variant = "glTF 2.0 binary";
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&keep_encoded_image, nullptr);
-  loader.SetFsCallbacks(kNoFileSystem);
+  if (!install_callbacks(loader, 0))
+    throw std::logic_error("glTF reader: tinygltf refused the callbacks that shut out files");
   tinygltf::Model model;
   std::string error, warning;
   if (!loader.LoadBinaryFromMemory(&model, &error, &warning,
