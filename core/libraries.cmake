@@ -35,7 +35,8 @@ set(ARG_METHOD_SOURCES
     match/child_halves.cpp match/match_prep.cpp match/mpair.cpp match/node_similarity.cpp
     match/packed_graph.cpp match/part_match.cpp match/sim_key.cpp match/similarity.cpp
     match/similarity_terms.cpp match/subgraph.cpp match/term_weights.cpp match/weights.cpp
-    search/query_ranker.cpp search/search_descriptor.cpp search/shape_sketch.cpp
+    search/coarse_sketch.cpp search/query_ranker.cpp search/search_descriptor.cpp
+    search/shape_sketch.cpp
     search/sketch_cells.cpp
     pipeline/build_arg.cpp pipeline/node_positions.cpp pipeline/pool_fragments.cpp
     pipeline/prepare_surface.cpp)

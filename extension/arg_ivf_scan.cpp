@@ -1,10 +1,12 @@
 // Searching an arg_ivf index: the query's nearest cells, their entries ranked by sketch
-// distance; on an index of `arg` values, the nearest candidates re-ranked by exact SIM, read
-// from the table, batch after batch while the executor asks for more rows.
+// distance; on an index of `arg` values, entries first ranked by the coarse distance (a few
+// bytes of each), the nearest of them by sketch distance, the nearest of those by exact SIM,
+// read from the table, batch after batch while the executor asks for more rows.
 #include <algorithm>
 #include <cmath>
 #include <new>
 
+#include "search/coarse_sketch.hpp"
 #include "search/query_ranker.hpp"
 #include "search/sketch_cells.hpp"
 
@@ -24,9 +26,17 @@ namespace {
 using namespace argpg::ivf;
 
 struct Hit {
-  double distance;  // sketch distance, then SIM once re-ranked
+  double distance;  // coarse or sketch distance, then SIM once re-ranked
   ItemPointerData tid;
+  BlockNumber block;  // where the entry was read (the coarse pass reads it again there)
+  OffsetNumber item;
 };
+
+// How many entries, for each candidate ranked by SIM, the coarse pass hands to the sketch
+// distance: a pool ranked by coarse distance keeps SIM's ten nearest among the sketch's
+// nearest fifty, less .003, when four times as many as wanted are read whole (965 labelled
+// models; core/search/coarse_sketch.hpp).
+constexpr Size kRefineFactor = 4;
 
 bool nearer(const Hit& a, const Hit& b) {
   if (a.distance != b.distance) return a.distance < b.distance;
@@ -45,8 +55,11 @@ struct ScanState {
   bool started;    // the query has been read for the current keys
   bool unordered;  // the query is NULL: every row, no distance
   bool exact;      // an index of arg values: batches re-ranked by SIM
-  Hit* hits;
+  Hit* hits;       // the probed cells' entries; for an index of arg values by coarse distance
   Size count, capacity, taken;
+  Hit* refined;  // entries read whole, not yet ranked by SIM: a min-heap by sketch distance
+  Size refined_count, refined_capacity;
+  arg::CoarseQuery* coarse;
   uint32* cell_order;  // every cell, nearest to the query first
   uint32 cells, probed;
   // Candidates ranked by SIM and not yet returned: a min-heap by SIM.
@@ -101,16 +114,27 @@ void read_list(IndexScanDesc scan, ScanState& s, const CellRef& cell, BlockNumbe
               // Entries are checked outside the guarded loop (ereport may not run inside it).
               const char* sketch[MaxOffsetNumber];
               Size size[MaxOffsetNumber];
-              OffsetNumber used = 0;
               for (OffsetNumber item = FirstOffsetNumber; item <= items; ++item) {
-                Hit& hit = s.hits[s.count + used];
-                read_entry(index, page, block, item, &hit.tid, &sketch[used], &size[used]);
+                Hit& hit = s.hits[s.count + item - 1];
+                read_entry(index, page, block, item, &hit.tid, &sketch[item - 1], &size[item - 1]);
                 hit.distance = 0;
-                ++used;
+                hit.block = block;
+                hit.item = item;
               }
-              if (!s.unordered) {
+              if (s.unordered) {
+              } else if (s.exact) {
+                // A few bytes of each entry: its whole sketch is read (strictly) only if it
+                // comes near; bytes that are no sketch at all are refused here.
+                for (OffsetNumber k = 0; k < items; ++k) {
+                  const double d =
+                      arg::coarse_sketch_distance(*s.coarse, std::string_view(sketch[k], size[k]));
+                  if (!std::isfinite(d))
+                    corrupted(index, block, psprintf("entry %u is not a sketch", k + 1));
+                  s.hits[s.count + k].distance = d;
+                }
+              } else {
                 argpg::Outcome out = argpg::guarded([&] {
-                  for (OffsetNumber k = 0; k < used; ++k) {
+                  for (OffsetNumber k = 0; k < items; ++k) {
                     arg::read_shape_sketch(std::string_view(sketch[k], size[k]), *s.row);
                     const double d = arg::sketch_distance(*s.query, *s.row);
                     // Checked sketches give finite distances; a NaN would break the sort.
@@ -121,8 +145,66 @@ void read_list(IndexScanDesc scan, ScanState& s, const CellRef& cell, BlockNumbe
                 if (out.failure != argpg::Failure::None)
                   corrupted(index, block, psprintf("entry's sketch unreadable (%s)", out.message));
               }
-              s.count += used;
+              s.count += items;
             });
+}
+
+// The sketch distance of a probed entry, read whole again where it was (strictly); false when
+// the entry is no longer there (VACUUM removed it since: its row is gone).
+bool refine(IndexScanDesc scan, ScanState& s, const Hit& hit, double& distance) {
+  Relation index = scan->indexRelation;
+  Buffer buf = ReadBuffer(index, hit.block);
+  LockBuffer(buf, BUFFER_LOCK_SHARE);
+  Page page = BufferGetPage(buf);
+  check_page(index, page, hit.block, kListPage);
+  // VACUUM compacts a page's items: look at the entry's place first, then over the page.
+  const OffsetNumber items = PageGetMaxOffsetNumber(page);
+  ItemPointerData tid;
+  const char* sketch = nullptr;
+  Size size = 0;
+  bool found = false;
+  if (hit.item <= items) {
+    read_entry(index, page, hit.block, hit.item, &tid, &sketch, &size);
+    found = ItemPointerEquals(&tid, const_cast<ItemPointer>(&hit.tid));
+  }
+  for (OffsetNumber item = FirstOffsetNumber; item <= items && !found; ++item) {
+    read_entry(index, page, hit.block, item, &tid, &sketch, &size);
+    found = ItemPointerEquals(&tid, const_cast<ItemPointer>(&hit.tid));
+  }
+  if (found) {
+    argpg::Outcome out = argpg::guarded([&] {
+      arg::read_shape_sketch(std::string_view(sketch, size), *s.row);
+      distance = arg::sketch_distance(*s.query, *s.row);
+      if (std::isnan(distance)) throw arg::InputError("its distance is not a number");
+    });
+    if (out.failure != argpg::Failure::None)
+      corrupted(index, hit.block, psprintf("entry's sketch unreadable (%s)", out.message));
+  }
+  UnlockReleaseBuffer(buf);
+  return found;
+}
+
+// Reads whole the next kRefineFactor x `want` entries by coarse distance into the refined
+// heap. Returns false when no entry of the probed cells is left to read.
+bool refine_more(IndexScanDesc scan, ScanState& s, Size want) {
+  if (s.taken >= s.count) return false;
+  const Size n = std::min(kRefineFactor * want, s.count - s.taken);
+  if (s.refined_count + n > s.refined_capacity) {
+    const Size capacity = std::max(2 * s.refined_capacity, s.refined_count + n);
+    s.refined =
+        static_cast<Hit*>(s.refined ? repalloc_huge(s.refined, capacity * sizeof(Hit))
+                                    : MemoryContextAllocHuge(s.memory, capacity * sizeof(Hit)));
+    s.refined_capacity = capacity;
+  }
+  for (Size i = 0; i < n; ++i) {
+    CHECK_FOR_INTERRUPTS();
+    Hit hit = s.hits[s.taken + i];
+    if (!refine(scan, s, hit, hit.distance)) continue;
+    s.refined[s.refined_count++] = hit;
+    std::push_heap(s.refined, s.refined + s.refined_count, farther);
+  }
+  s.taken += n;
+  return true;
 }
 
 // Reads the next `n` cells of the query's order into the hits, and sorts the hits not yet
@@ -163,7 +245,8 @@ void start(IndexScanDesc scan, ScanState& s) {
     MemoryContextSwitchTo(caller);
   }
   MemoryContextReset(s.memory);  // deletes the last query's ranker
-  s.hits = s.pool = nullptr;
+  s.hits = s.pool = s.refined = nullptr;
+  s.refined_count = s.refined_capacity = 0;
   s.excess = nullptr;
   s.capacity = s.count = s.taken = s.pool_count = s.pool_capacity = s.excess_capacity = 0;
   s.batches = 0;
@@ -179,6 +262,7 @@ void start(IndexScanDesc scan, ScanState& s) {
       argpg::Outcome out = argpg::guarded([&] {
         s.ranker = new arg::QueryRanker(argpg::view(v));
         *s.query = s.ranker->sketch();
+        *s.coarse = arg::coarse_query(*s.query);
       });
       argpg::raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot read the query ARG");
     } else {
@@ -233,10 +317,15 @@ bool rank_batch(IndexScanDesc scan, ScanState& s, argpg::IterativeScan mode) {
   if (s.batches > 0 &&
       (mode == argpg::IterativeScan::Off || s.reranked >= Size(argpg::max_scan_tuples())))
     return false;
-  if (s.taken >= s.count && s.batches > 0 && s.probed < s.cells)
+  const Size want = Size(argpg::ivf_candidates());
+  // Enough entries read whole, reading further cells once the probed ones are used up.
+  while (s.refined_count < want) {
+    if (refine_more(scan, s, want)) continue;
+    if (s.batches == 0 || s.probed >= s.cells) break;
     probe_cells(scan, s, uint32(argpg::ivf_probes()));
-  if (s.taken >= s.count) return false;
-  const Size n = std::min(Size(argpg::ivf_candidates()), s.count - s.taken);
+  }
+  if (s.refined_count == 0) return false;
+  const Size n = std::min(want, s.refined_count);
   if (s.pool_count + n > s.pool_capacity) {
     const Size capacity = std::max(2 * s.pool_capacity, s.pool_count + n);
     s.pool = static_cast<Hit*>(s.pool ? repalloc_huge(s.pool, capacity * sizeof(Hit))
@@ -253,18 +342,18 @@ bool rank_batch(IndexScanDesc scan, ScanState& s, argpg::IterativeScan mode) {
   Size ranked = 0;
   for (Size i = 0; i < n; ++i) {
     CHECK_FOR_INTERRUPTS();
-    const Hit& candidate = s.hits[s.taken + i];
+    std::pop_heap(s.refined, s.refined + s.refined_count, farther);
+    const Hit candidate = s.refined[--s.refined_count];
     MemoryContextReset(s.row_memory);
     varlena* v = table_value(scan, s, candidate.tid);
     if (!v) continue;  // not visible to this scan, or NULL now
     double sim = 0;
     argpg::Outcome out = argpg::guarded([&] { sim = s.ranker->sim(argpg::view(v)); });
     argpg::raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot compare ARGs");
-    s.pool[s.pool_count++] = {sim, candidate.tid};
+    s.pool[s.pool_count++] = {sim, candidate.tid, candidate.block, candidate.item};
     std::push_heap(s.pool, s.pool + s.pool_count, farther);
     s.excess[s.reranked + ranked++] = sim - candidate.distance;
   }
-  s.taken += n;
   s.reranked += ranked;
   ++s.batches;
   // The tenth percentile of how far SIM lay above the sketch's distance among ranked rows: a
@@ -287,9 +376,11 @@ bool next_ranked(IndexScanDesc scan, ScanState& s, Hit& out) {
   for (;;) {
     if (s.pool_count > 0) {
       const Hit& nearest = s.pool[0];
+      // The nearest candidate not yet ranked is the refined heap's root (an entry not yet
+      // read whole is taken to lie no nearer than those read).
       const bool settled =
           !more || mode == argpg::IterativeScan::RelaxedOrder ||
-          (s.taken < s.count && nearest.distance <= s.hits[s.taken].distance + s.margin);
+          (s.refined_count > 0 && nearest.distance <= s.refined[0].distance + s.margin);
       if (settled) {
         out = nearest;
         std::pop_heap(s.pool, s.pool + s.pool_count, farther);
@@ -316,6 +407,7 @@ IndexScanDesc arg_ivf_beginscan(Relation index, int nkeys, int norderbys) {
   auto* s = static_cast<ScanState*>(palloc0(sizeof(ScanState)));
   s->query = static_cast<arg::ShapeSketch*>(palloc(sizeof(arg::ShapeSketch)));
   s->row = static_cast<arg::ShapeSketch*>(palloc(sizeof(arg::ShapeSketch)));
+  s->coarse = static_cast<arg::CoarseQuery*>(palloc(sizeof(arg::CoarseQuery)));
   s->memory = AllocSetContextCreate(CurrentMemoryContext, "arg_ivf scan", ALLOCSET_DEFAULT_SIZES);
   s->row_memory =
       AllocSetContextCreate(CurrentMemoryContext, "arg_ivf scan row", ALLOCSET_DEFAULT_SIZES);
@@ -369,6 +461,7 @@ void arg_ivf_endscan(IndexScanDesc scan) {
   MemoryContextDelete(s->row_memory);
   pfree(s->query);
   pfree(s->row);
+  pfree(s->coarse);
   pfree(s);
   scan->opaque = nullptr;
 }
