@@ -11,6 +11,8 @@
 #   pgtap       pg_prove on tests/pgtap/*.sql (04_reference.sql: docs/REFERENCE.md covers the SQL
 #               objects, settings and SQLSTATEs)
 #   reference   tests/reference/examples.sh: every example of docs/REFERENCE.md runs as it says
+#   readme      tests/reference/readme_examples.sh: every example of README.md and of the Python
+#               client's README runs as written against a database made as the demo makes it
 #   round trips tests/sql_roundtrip.sh: pg_dump/pg_restore and COPY (FORMAT binary) of arg values
 #   upgrade     tests/upgrade/upgrade.sh: a 0.1.0 database with its values, a generated column and
 #               GiST indexes through ALTER EXTENSION arg UPDATE, and its dump restored at today's
@@ -152,18 +154,6 @@ line_suite() {
 sql_only=0
 [[ "${ARG_SUITES:-all}" == sql ]] && sql_only=1
 
-# The Debian 13 root for the PostgreSQL 17 suites is made and built in the background meanwhile
-# (debootstrap and apt mostly wait on the network); its suites run after the shards.
-# So are the clean roots the packages are installed into.
-if [[ $sql_only -eq 0 ]]; then
-  tests/versions/pg17.sh prepare >"$logs/pg17-prepare.log" 2>&1 &
-  pg17_prepare=$!
-  tests/packages/deb_install.sh prepare 15 >"$logs/clean15-prepare.log" 2>&1 &
-  clean15_prepare=$!
-  tests/packages/deb_install.sh prepare 17 >"$logs/clean17-prepare.log" 2>&1 &
-  clean17_prepare=$!
-fi
-
 # --- unit tests -----------------------------------------------------------------------------
 if [[ $sql_only -eq 0 ]]; then
 banner "unit tests (googletest)"
@@ -178,6 +168,19 @@ banner "core stage order"
 tap_script "core stage order" layering 1 tests/layering/check_stages.sh
 banner "unsupported PostgreSQL versions"
 tap_script "unsupported PostgreSQL versions" unsupported 1 tests/versions/unsupported.sh
+fi
+
+# The Debian 13 root for the PostgreSQL 17 suites is made and built in the background while the
+# SQL suites run (debootstrap and apt mostly wait on the network; started after the argtool
+# suite, whose start-up times a busy machine would distort); its suites run after the shards.
+# So are the clean roots the packages are installed into.
+if [[ $sql_only -eq 0 ]]; then
+  tests/versions/pg17.sh prepare >"$logs/pg17-prepare.log" 2>&1 &
+  pg17_prepare=$!
+  tests/packages/deb_install.sh prepare 15 >"$logs/clean15-prepare.log" 2>&1 &
+  clean15_prepare=$!
+  tests/packages/deb_install.sh prepare 17 >"$logs/clean17-prepare.log" 2>&1 &
+  clean17_prepare=$!
 fi
 
 # --- the throwaway cluster ------------------------------------------------------------------
@@ -237,6 +240,11 @@ tap_script "pgTAP tests (pg_prove)" pgtap "$can_prove" pg_prove --verbose -d arg
 # --- scripts that print TAP lines on the throwaway cluster -----------------------------------
 banner "reference examples (docs/REFERENCE.md)"
 tap_script "reference examples" reference "$cluster_up" tests/reference/examples.sh
+
+if [[ $sql_only -eq 0 ]]; then
+  banner "README examples (README.md, clients/python/README.md)"
+  tap_script "README examples" readme "$cluster_up" tests/reference/readme_examples.sh
+fi
 
 banner "round trips (pg_dump, COPY)"
 tap_script "round trips (pg_dump, COPY)" roundtrip "$cluster_up" tests/sql_roundtrip.sh

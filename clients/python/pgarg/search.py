@@ -55,7 +55,9 @@ def nearest(conn: psycopg.Connection[Any], table: TableName, query: Arg, k: int 
     given values (None: IS NULL); names are quoted as identifiers and values sent as
     parameters, never read as SQL.
 
-    Without `candidates` or `sketch` every row is compared (``ORDER BY descr <~> query``). With
+    Without `candidates` or `sketch` it sends the plain query (``ORDER BY descr <~> query LIMIT
+    k``), which the server answers through the column's arg_ivf index when it has one and by
+    comparing every row otherwise. With
     `candidates`, the
     search runs in two stages through the server's arg_knn: the `candidates` rows nearest by
     the global descriptor (``arg_global``, through a GiST index on ``arg_global(descr)``, or the
