@@ -69,7 +69,11 @@ struct ScanState {
   // which tells how near an unranked candidate's SIM could be (margin()).
   double* excess;
   Size excess_capacity;
-  double margin;  // a low quantile of `excess`, refreshed after each batch
+  // Low quantiles of `excess`, refreshed after each batch: the tenth percentile while fewer rows
+  // than a batch have been returned (a LIMIT k query), the least once more are wanted (a filter
+  // rejects most rows, so each row found out of turn is one the query may miss).
+  double margin, margin_late;
+  Size returned;  // rows returned by this search
   int batches;
   Size reranked;  // rows ranked by SIM in this scan (arg.max_scan_tuples bounds it)
   double last;    // the SIM of the last row returned (strict order drops rows below it)
@@ -251,7 +255,8 @@ void start(IndexScanDesc scan, ScanState& s) {
   s.capacity = s.count = s.taken = s.pool_count = s.pool_capacity = s.excess_capacity = 0;
   s.batches = 0;
   s.reranked = 0;
-  s.margin = 0;
+  s.margin = s.margin_late = 0;
+  s.returned = 0;
   s.last = -1;
   s.on_reset = {delete_ranker, &s};
   MemoryContextRegisterResetCallback(s.memory, &s.on_reset);
@@ -318,7 +323,12 @@ bool rank_batch(IndexScanDesc scan, ScanState& s, argpg::IterativeScan mode) {
       (mode == argpg::IterativeScan::Off || s.reranked >= Size(argpg::max_scan_tuples())))
     return false;
   const Size want = Size(argpg::ivf_candidates());
-  // Enough entries read whole, reading further cells once the probed ones are used up.
+  // Once a batch's worth of rows has been returned and more are wanted (a filter rejects most
+  // of them), each batch reads further cells too: the nearest rows of cells farther out come
+  // sooner than the far rows of the cells read first. A plain LIMIT k search never gets here.
+  // Then enough entries read whole, more cells when the probed ones are used up.
+  if (s.batches > 0 && s.returned >= want && s.probed < s.cells)
+    probe_cells(scan, s, uint32(argpg::ivf_probes()));
   while (s.refined_count < want) {
     if (refine_more(scan, s, want)) continue;
     if (s.batches == 0 || s.probed >= s.cells) break;
@@ -356,12 +366,14 @@ bool rank_batch(IndexScanDesc scan, ScanState& s, argpg::IterativeScan mode) {
   }
   s.reranked += ranked;
   ++s.batches;
-  // The tenth percentile of how far SIM lay above the sketch's distance among ranked rows: a
-  // candidate not yet ranked is taken to lie at least that far above its sketch distance.
+  // How far SIM lay above the sketch's distance among ranked rows: a candidate not yet ranked
+  // is taken to lie at least that far above its sketch distance (the tenth percentile, then the
+  // least).
   if (s.reranked > 0) {
     const Size at = s.reranked / 10;
     std::nth_element(s.excess, s.excess + at, s.excess + s.reranked);
     s.margin = s.excess[at];
+    s.margin_late = *std::min_element(s.excess, s.excess + at + 1);
   }
   return true;
 }
@@ -378,14 +390,16 @@ bool next_ranked(IndexScanDesc scan, ScanState& s, Hit& out) {
       const Hit& nearest = s.pool[0];
       // The nearest candidate not yet ranked is the refined heap's root (an entry not yet
       // read whole is taken to lie no nearer than those read).
+      const double margin = s.returned < Size(argpg::ivf_candidates()) ? s.margin : s.margin_late;
       const bool settled =
           !more || mode == argpg::IterativeScan::RelaxedOrder ||
-          (s.refined_count > 0 && nearest.distance <= s.refined[0].distance + s.margin);
+          (s.refined_count > 0 && nearest.distance <= s.refined[0].distance + margin);
       if (settled) {
         out = nearest;
         std::pop_heap(s.pool, s.pool + s.pool_count, farther);
         --s.pool_count;
         if (mode == argpg::IterativeScan::StrictOrder && out.distance < s.last) continue;
+        ++s.returned;
         return true;
       }
     }
