@@ -3,6 +3,22 @@
 
 \echo Use "ALTER EXTENSION arg UPDATE TO '0.3.0'" to load this file. \quit
 
+-- The library (arg.so) must be at least as new as this script: an older one lacks what the
+-- script creates and cannot read what it may write. A session that loaded the library before it
+-- was replaced still runs the old one, hence the hint to reconnect.
+DO $check$
+DECLARE
+  library text := substring(@extschema@.arg_version() FROM '^arg ([0-9]+[.][0-9]+[.][0-9]+)');
+BEGIN
+  IF library IS NULL OR string_to_array(library, '.')::int[] < string_to_array('0.3.0', '.')::int[] THEN
+    RAISE EXCEPTION 'arg version mismatch: the library is %, this SQL script is 0.3.0',
+                    coalesce(library, @extschema@.arg_version())
+      USING ERRCODE = 'feature_not_supported',
+            HINT = 'Install arg.so and the SQL scripts from one release, then reconnect.';
+  END IF;
+END
+$check$;
+
 -- The index keeps each value's sketch; a search ranks the sketches of the cells nearest the
 -- query, then the nearest arg.ivf_candidates of them by SIM, read from the table.
 CREATE OPERATOR CLASS arg_ops DEFAULT FOR TYPE arg USING arg_ivf AS

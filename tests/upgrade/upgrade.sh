@@ -59,7 +59,7 @@ nearest() {
 }
 value_of() { printf 'arg1:%s' "$(base64 -w0 "tests/unit/fixtures/format1/$1.arg")"; }
 
-echo "1..30"
+echo "1..32"
 drop_databases
 q -d postgres -c "CREATE DATABASE $old" -c "CREATE DATABASE $fresh" -c "CREATE DATABASE $restored" \
   >/dev/null || exit 1
@@ -197,6 +197,29 @@ check "it ranks as brute force does (every cell probed)" \
   same "$(q -d $mid -c "SELECT string_agg(id::text, ',' ORDER BY descr <~> (SELECT descr FROM objects WHERE id = 1), id) FROM objects")" \
   "$(q -d $mid -c "SET enable_seqscan = off" -c "SET arg.ivf_probes = 2" \
        -c "SELECT string_agg(id::text, ',') FROM (SELECT id FROM objects ORDER BY descr <~> (SELECT descr FROM objects WHERE id = 1) LIMIT 6) s")"
+
+# A library older than the SQL script: the script's first statement refuses it by name. The
+# check of the current script, made to claim a later version, stands in for a newer script.
+sharedir=$("$pg_config" --sharedir)/extension
+future=$sharedir/arg--$current--9.9.9.sql
+sudo_if_needed=()
+[[ -w $sharedir ]] || sudo_if_needed=(sudo -n)
+{
+  echo "-- arg 9.9.9 (a test of the library check only)"
+  sed -n '/^DO \$check\$/,/^\$check\$;/p' "extension/$(ls extension | grep -E -- "--$current\.sql$")" |
+    sed "s/'$current'/'9.9.9'/g; s/script is $current/script is 9.9.9/"
+} >"$work/future.sql"
+if "${sudo_if_needed[@]}" cp "$work/future.sql" "$future" 2>/dev/null; then
+  check "a SQL script newer than the library fails: version mismatch (0A000, both versions)" \
+    fails_with $mid 0A000 "arg version mismatch" "the library is $current" "script is 9.9.9" \
+    "ALTER EXTENSION arg UPDATE TO '9.9.9'"
+  check "the extension stays at $current and its index still checks" \
+    same "$current|6" "$(q -d $mid -c "SELECT (SELECT extversion FROM pg_extension WHERE extname = 'arg'), (SELECT entries FROM arg_index_check('objects_descr'))")"
+  "${sudo_if_needed[@]}" rm -f "$future"
+else
+  echo "ok $((++n)) # SKIP cannot write $sharedir"
+  echo "ok $((++n)) # SKIP cannot write $sharedir"
+fi
 
 echo "# $((n - failed)) passed, $failed failed"
 [[ $failed -eq 0 ]]
