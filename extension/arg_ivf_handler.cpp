@@ -92,10 +92,18 @@ void cost_estimate(PlannerInfo* root, IndexPath* path, double loop_count, Cost* 
              entries * (cpu_index_tuple_cost + distance) + double(cells) * distance;
   // An index of arg values ranks its first candidates by SIM (<~>'s COST 2000) before its first
   // row, each read from the table.
-  if (path->indexinfo->opcintype[0] != InvalidOid && is_arg_type(path->indexinfo->opcintype[0]))
-    *startup += std::min(double(argpg::ivf_candidates()), entries) *
-                (2000 * cpu_operator_cost + random_page_cost);
-  *total = *startup + entries * cpu_tuple_cost;
+  const bool ranks =
+      path->indexinfo->opcintype[0] != InvalidOid && is_arg_type(path->indexinfo->opcintype[0]);
+  const double rank = 2000 * cpu_operator_cost + random_page_cost;
+  if (ranks) *startup += std::min(double(argpg::ivf_candidates()), entries) * rank;
+  // Past its first candidates an iterative search ranks one more candidate for each further row
+  // it returns, so its whole run costs a SIM a table row: under LIMIT k and a filter that keeps
+  // a share s of the rows the planner charges k/s SIMs, which is what the scan does, and a
+  // selective filter goes to brute force over the rows that pass it.
+  if (ranks && argpg::iterative_scan() != argpg::IterativeScan::Off)
+    *total = *startup + path->indexinfo->tuples * rank;
+  else
+    *total = *startup + entries * cpu_tuple_cost;
   *selectivity = costs.indexSelectivity;
   *correlation = 0;
   *pages = share * double(path->indexinfo->pages);
