@@ -25,8 +25,8 @@ int max_triangles = int(kDefaults.max_triangles);
 int max_texture_pixels = int(kDefaults.max_image_pixels);
 int build_threads = 1;
 bool query_cache = true;
-int ivf_probes_setting = 16;
-int ivf_candidates_setting = 100;
+int ivf_probes_setting = 4;
+int ivf_candidates_setting = 25;
 int iterative_scan_setting = int(IterativeScan::StrictOrder);
 int max_scan_tuples_setting = 20000;
 

@@ -59,7 +59,7 @@ SELECT ok(EXISTS (SELECT 1 FROM pg_amop o JOIN pg_opclass c ON c.opcfamily = o.a
                   WHERE c.opcname = 'arg_sketch_ops' AND o.amoppurpose = 'o'
                     AND o.amopopr = '<~>(arg_sketch,arg_sketch)'::regoperator),
           'arg_sketch_ops orders by <~>');
-SELECT is(current_setting('arg.ivf_probes'), '16', 'arg.ivf_probes defaults to 16 cells');
+SELECT is(current_setting('arg.ivf_probes'), '4', 'arg.ivf_probes defaults to 4 cells');
 
 -- Every function of the SQL surface, with its signature and return type. Pure functions are
 -- IMMUTABLE STRICT PARALLEL SAFE, so they work in generated columns and parallel plans.
