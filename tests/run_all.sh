@@ -24,6 +24,8 @@
 #   server log  no backend of the throwaway cluster died ("terminated by signal") during the above,
 #               read where tools/pg/cluster.sh log-path says the log is; and a test of that check
 #   shards      tests/scale/shards.sh: postgres_fdw, a coordinator and two shards (its own clusters)
+#   recovery    tests/recovery/index_recovery.sh: the arg_ivf index through crashes (SIGKILL,
+#               immediate stop) and on a streaming standby with wal_consistency_checking
 #   pg17        tests/versions/pg17.sh: the SQL suites above (regression to out of memory) against
 #               PostgreSQL 17, built and run in a Debian 13 root made from Debian's archive
 #   packages    make deb here and in the Debian 13 root, each package installed with apt-get into
@@ -316,6 +318,9 @@ fi
 # --- sharding with postgres_fdw (three clusters of its own) ---------------------------------
 banner "shards (postgres_fdw)"
 tap_script "shards (postgres_fdw)" shards 1 tests/scale/shards.sh
+
+banner "index through crashes and on a standby"
+tap_script "index: crashes and a standby" recovery 1 tests/recovery/index_recovery.sh
 
 # --- the SQL suites against PostgreSQL 17, in a Debian 13 root --------------------------------
 banner "PostgreSQL 17 (Debian 13 root)"
