@@ -124,6 +124,7 @@ build: cmake-all
 
 # Each step is a new make so that PGXS is read after `deps` has installed PostgreSQL.
 test: deps
+	tests/versions/head_start.sh
 	$(MAKE) --no-print-directory build
 	$(SUDO) $(MAKE) --no-print-directory install ARG_NO_CMAKE=1
 	tests/run_all.sh

@@ -28,6 +28,10 @@ root=$roots/clean-$suite
 
 # A root holds only PostgreSQL: made once, then copied for each run, so that a run starts clean.
 template=$roots/clean-$suite-template
+mkdir -p "$roots"
+# One maker at a time (make test's head start and run_all may overlap): the second waits.
+exec 9>"$template.lock"
+flock 9
 if [[ ! -f "$template/.ready" ]]; then
   tools/pg/root.sh make "$template" "$suite" "postgresql-$major" >/dev/null || {
     echo "deb_install: cannot make the clean Debian $suite root" >&2
@@ -35,6 +39,7 @@ if [[ ! -f "$template/.ready" ]]; then
   }
   touch "$template/.ready"
 fi
+flock -u 9
 [[ $mode == prepare ]] && exit 0
 
 debs=${2:?usage: deb_install.sh MAJOR DEBS_DIR}

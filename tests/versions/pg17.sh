@@ -6,6 +6,7 @@
 # from 0.1.0 on a throwaway PostgreSQL 17 cluster inside the root (tests/run_all.sh with
 # ARG_SUITES=sql). Ends with the inner run's "N passed, N failed".
 #
+#   tests/versions/pg17.sh root      make the root only (make test starts it before its build)
 #   tests/versions/pg17.sh prepare   make the root and build there (no test); for a head start
 #   tests/versions/pg17.sh           prepare if needed, then run the suites
 #   tests/versions/pg17.sh deb       prepare if needed, then `make deb` in the root: the
@@ -33,8 +34,14 @@ packages=(
   build-essential debhelper dpkg-dev postgresql-server-dev-all
 )
 
+# One maker of the root at a time (the head start and a later run may overlap): the second
+# waits for the first, then finds the root made.
+make_root() {
+  flock "$root.lock" tools/pg/root.sh make "$root" trixie "${packages[@]}"
+}
+
 prepare() {
-  tools/pg/root.sh make "$root" trixie "${packages[@]}" || return 1
+  make_root || return 1
   # The working tree, without this machine's builds; tar keeps the files' times, so an
   # unchanged source is not rebuilt.
   mkdir -p "$root$src"
@@ -56,6 +63,10 @@ prepare() {
 }
 
 mkdir -p "$roots"
+if [[ "${1:-}" == root ]]; then
+  make_root
+  exit
+fi
 if [[ "${1:-}" == prepare ]]; then
   prepare
   exit
