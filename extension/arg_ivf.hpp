@@ -178,6 +178,7 @@ void define_reloptions();
 extern "C" {
 IndexBuildResult* arg_ivf_build(Relation heap, Relation index, IndexInfo* info);
 void arg_ivf_buildempty(Relation index);
+char* arg_ivf_buildphasename(int64 phase);
 bool arg_ivf_insert(Relation index, Datum* values, bool* isnull, ItemPointer heap_tid,
                     Relation heap, IndexUniqueCheck check_unique, bool index_unchanged,
                     IndexInfo* info);

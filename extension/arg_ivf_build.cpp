@@ -11,7 +11,9 @@
 extern "C" {
 #include "access/tableam.h"
 #include "access/xloginsert.h"
+#include "commands/progress.h"
 #include "common/pg_prng.h"
+#include "pgstat.h"
 #include "utils/memutils.h"
 }
 
@@ -27,6 +29,10 @@ namespace {
 constexpr double kSamplePerCell = 20;
 // Rows filed at once, on arg.max_build_threads threads.
 constexpr int kBatch = 256;
+
+// The build's phases in pg_stat_progress_create_index (PostgreSQL numbers an access method's
+// own phases from 2; arg_ivf_buildphasename names them).
+enum BuildPhase : int64 { kPhaseSampling = 2, kPhaseCentres, kPhaseFiling };
 
 struct Sampling {
   Relation index;
@@ -61,6 +67,7 @@ struct Filing {
   const Cells* cells;
   int threads;
   double rows;
+  Size filed;  // rows written to their lists
   int count;
   ItemPointerData tids[kBatch];
   varlena* values[kBatch];
@@ -87,6 +94,8 @@ void file_batch(Filing& f) {
     append_entry(f.index, cells.refs[f.cell_of[i]], &f.tids[i], VARDATA_ANY(f.values[i]),
                  VARSIZE_ANY_EXHDR(f.values[i]), /*fill_holes=*/false);
   }
+  f.filed += f.count;
+  pgstat_progress_update_param(PROGRESS_CREATEIDX_TUPLES_DONE, int64(f.filed));
   f.count = 0;
   MemoryContextReset(f.batch_memory);
 }
@@ -194,7 +203,9 @@ IndexBuildResult* arg_ivf_build(Relation heap, Relation index, IndexInfo* info) 
   // The same table gives the same index: a fixed seed, and scans that start at block 0 (no
   // synchronised scans).
   pg_prng_seed(&s.random, 0x41524749);
+  pgstat_progress_update_param(PROGRESS_CREATEIDX_SUBPHASE, kPhaseSampling);
   table_index_build_scan(heap, index, info, false, true, sample_row, &s, nullptr);
+  pgstat_progress_update_param(PROGRESS_CREATEIDX_SUBPHASE, kPhaseCentres);
 
   // Centres: `lists`, or the square root of the rows, at most one a sampled row.
   Size cells = lists > 0 ? Size(lists) : Size(std::ceil(std::sqrt(s.rows)));
@@ -232,6 +243,12 @@ IndexBuildResult* arg_ivf_build(Relation heap, Relation index, IndexInfo* info) 
       MemoryContextAllocHuge(CurrentMemoryContext, sizeof(arg::ShapeSketch) * kBatch));
   f->batch_memory =
       AllocSetContextCreate(CurrentMemoryContext, "arg_ivf build batch", ALLOCSET_DEFAULT_SIZES);
+  {
+    const int params[] = {PROGRESS_CREATEIDX_SUBPHASE, PROGRESS_CREATEIDX_TUPLES_TOTAL,
+                          PROGRESS_CREATEIDX_TUPLES_DONE};
+    const int64 values[] = {kPhaseFiling, int64(s.rows), 0};
+    pgstat_progress_update_multi_param(3, params, values);
+  }
   const double heap_rows =
       table_index_build_scan(heap, index, info, false, true, file_row, f, nullptr);
   file_batch(*f);
@@ -241,6 +258,22 @@ IndexBuildResult* arg_ivf_build(Relation heap, Relation index, IndexInfo* info) 
   result->index_tuples = f->rows;
   MemoryContextDelete(f->batch_memory);
   return result;
+}
+
+// The name of a build phase for pg_stat_progress_create_index ("building index: " + it).
+char* arg_ivf_buildphasename(int64 phase) {
+  switch (phase) {
+    case PROGRESS_CREATEIDX_SUBPHASE_INITIALIZE:
+      return const_cast<char*>("initializing");
+    case kPhaseSampling:
+      return const_cast<char*>("sampling rows");
+    case kPhaseCentres:
+      return const_cast<char*>("choosing centres");
+    case kPhaseFiling:
+      return const_cast<char*>("filing rows");
+    default:
+      return nullptr;
+  }
 }
 
 // An unlogged table's index after a crash: one cell without a centre, which every row joins

@@ -186,7 +186,7 @@ Datum arg_ivf_handler(PG_FUNCTION_ARGS) {
   am->amcostestimate = argpg::ivf::cost_estimate;
   am->amoptions = argpg::ivf::options;
   am->amproperty = nullptr;
-  am->ambuildphasename = nullptr;
+  am->ambuildphasename = arg_ivf_buildphasename;
   am->amvalidate = argpg::ivf::validate;
   am->amadjustmembers = nullptr;
   am->ambeginscan = arg_ivf_beginscan;
