@@ -30,15 +30,10 @@ mkdir -p "$build/scale"
 if [[ "${4:-}" != --existing ]]; then
   pgdir=$build/pg-index-bench
   trap 'tools/pg/cluster.sh stop "$pgdir" >/dev/null' EXIT
-  tools/pg/cluster.sh start "$pgdir"
+  tools/pg/cluster.sh set "$pgdir" shared_buffers=4GB max_parallel_workers_per_gather=2 \
+    maintenance_work_mem=1GB max_wal_size=8GB
   # shellcheck disable=SC1091
   source "$pgdir/env"
-  if [[ $(psql -X -d postgres -tA -c 'SHOW shared_buffers') != 4GB ]]; then
-    psql -X -q -d postgres -c "ALTER SYSTEM SET shared_buffers = '4GB'" \
-      -c "ALTER SYSTEM SET max_parallel_workers_per_gather = 2" \
-      -c "ALTER SYSTEM SET maintenance_work_mem = '1GB'" -c "ALTER SYSTEM SET max_wal_size = '8GB'"
-    tools/pg/cluster.sh stop "$pgdir" && tools/pg/cluster.sh start "$pgdir"
-  fi
 fi
 db=arg_index_bench
 psql -X -q -d postgres -tAc "SELECT 1 FROM pg_database WHERE datname = '$db'" | grep -q 1 ||

@@ -51,16 +51,9 @@ max_size=$(tr ' ' '\n' <<<"$sizes" | sort -n | tail -n 1)
 if [[ "${1:-}" != --existing ]]; then
   pgdir=$build/pg-scale-bench
   trap 'tools/pg/cluster.sh stop "$pgdir" >/dev/null' EXIT
-  tools/pg/cluster.sh start "$pgdir"
+  tools/pg/cluster.sh set "$pgdir" shared_buffers=1GB max_parallel_workers_per_gather=2
   # shellcheck disable=SC1091
   source "$pgdir/env"
-  if [[ $(psql -X -d postgres -tA -c 'SHOW shared_buffers') != 1GB ]]; then
-    psql -X -q -d postgres -c "ALTER SYSTEM SET shared_buffers = '1GB'" \
-      -c "ALTER SYSTEM SET max_parallel_workers_per_gather = 2"
-    tools/pg/cluster.sh stop "$pgdir" && tools/pg/cluster.sh start "$pgdir"
-    # shellcheck disable=SC1091
-    source "$pgdir/env"
-  fi
 fi
 
 db=arg_scale_bench

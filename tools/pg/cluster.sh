@@ -5,6 +5,9 @@
 #   tools/pg/cluster.sh stop DIR [--remove]   stop it (and delete its data); safe to call twice
 #   tools/pg/cluster.sh status DIR            exit 0 when it is running
 #   tools/pg/cluster.sh log-path DIR          print where its server log is (fails when none is)
+#   tools/pg/cluster.sh set DIR NAME=VALUE...  start it if needed, ALTER SYSTEM each setting it
+#                                             does not have yet and restart it when one changed
+#                                             (a benchmark's shared_buffers, say)
 #
 # DIR/env holds PGHOST, PGPORT, PGUSER for clients (source it). The server listens on localhost
 # only, has no Unix socket, and trusts local TCP connections: it is for tests and the demo, never
@@ -17,12 +20,19 @@
 set -euo pipefail
 
 usage() {
-  echo "usage: $0 start DIR [--fresh] | stop DIR [--remove] | status DIR | log-path DIR" >&2
+  echo "usage: $0 start DIR [--fresh] | stop DIR [--remove] | status DIR | log-path DIR |" \
+    "set DIR NAME=VALUE..." >&2
   exit 2
 }
 [[ $# -ge 2 ]] || usage
 action=$1
-if [[ "$action" == start ]]; then mkdir -p "$2"; elif [[ ! -d "$2" ]]; then
+settings=()
+if [[ "$action" == set ]]; then
+  settings=("${@:3}")
+  [[ ${#settings[@]} -gt 0 ]] || usage
+  set -- "$1" "$2"
+fi
+if [[ "$action" == start || "$action" == set ]]; then mkdir -p "$2"; elif [[ ! -d "$2" ]]; then
   [[ "$action" == log-path ]] && echo "cluster: no cluster in $2 (no such folder), so no server log" >&2
   [[ "$action" == stop ]] && exit 0 || exit 1
 fi
@@ -178,8 +188,30 @@ log_path() {
   echo "$log"
 }
 
+# ALTER SYSTEM for each NAME=VALUE whose current value differs, then a restart (most such
+# settings, shared_buffers among them, take effect only then).
+set_settings() {
+  start >/dev/null
+  local setting name value changed=0
+  local sql=(psql -X -q -tA -v ON_ERROR_STOP=1 -h localhost -p "$(cat "$dir/port")" -U postgres -d postgres)
+  for setting in "${settings[@]}"; do
+    name=${setting%%=*} value=${setting#*=}
+    [[ "$name" =~ ^[a-z_.]+$ && "$setting" == *=* ]] || { echo "cluster: not NAME=VALUE: $setting" >&2; exit 2; }
+    [[ $("${sql[@]}" -c "SELECT current_setting('$name')") == "$value" ]] && continue
+    "${sql[@]}" -c "ALTER SYSTEM SET $name = '${value//\'/\'\'}'" || exit 1
+    changed=1
+  done
+  if [[ $changed -eq 1 ]]; then
+    stop >/dev/null
+    start
+  else
+    echo "cluster: running on localhost:$(cat "$dir/port") ($dir), settings as asked"
+  fi
+}
+
 case "$action" in
   start) start ;;
+  set) set_settings ;;
   stop) stop ;;
   status) is_running ;;
   log-path) log_path ;;
