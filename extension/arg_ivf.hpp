@@ -34,7 +34,7 @@ inline constexpr uint16 kPageId = 0xA6F1;  // in every page's special space
 enum PageKind : uint16 { kMetaPage = 1, kCellPage = 2, kListPage = 3 };
 
 // The largest sketch an entry or a centre may hold: three fit a page. A sketch with every part
-// is 2,588 bytes.
+// is 2,596 bytes (2,588 in version 1, without the digest).
 inline constexpr Size kMaxSketchBytes = 2600;
 
 // A page's special space.

@@ -14,8 +14,9 @@ namespace arg {
 
 namespace {
 
-// The sketch's layout (search/shape_sketch.cpp): magic, version, parts, flags, graph blocks,
-// then the panorama's block scales and codes, then the spectrum.
+// The sketch's layout (search/shape_sketch.cpp): magic, version, parts, flags (and in version 2
+// the digest), graph blocks, then the panorama's block scales and codes, then the spectrum.
+// Offsets below are from the graph blocks' start less 8 (version 1's header).
 constexpr std::size_t kHeader = 8, kGraphAt = kHeader;
 constexpr std::size_t kPanoramaAt = kGraphAt + 4 * kSketchGraphDims;
 constexpr std::size_t kCodesAt = kPanoramaAt + 4 * kPanoramaBlocks;
@@ -68,10 +69,15 @@ CoarseQuery coarse_query(const ShapeSketch& s) {
 double coarse_sketch_distance(const CoarseQuery& q, std::string_view bytes) {
   constexpr double kNever = std::numeric_limits<double>::infinity();
   const auto* b = reinterpret_cast<const unsigned char*>(bytes.data());
-  if (bytes.size() < kPanoramaAt || std::memcmp(b, "ARGS", 4) != 0 || b[4] != kSketchVersion)
-    return kNever;
+  if (bytes.size() < kHeader || std::memcmp(b, "ARGS", 4) != 0) return kNever;
+  const std::size_t header = sketch_header_size(b[4]);
+  if (header == 0 || bytes.size() < header - kHeader + kPanoramaAt) return kNever;
   const std::uint8_t parts = b[5];
   const std::uint16_t flags = std::uint16_t(b[6] | b[7] << 8);
+  // The digest is not checked here: an entry near enough is read whole (read_shape_sketch)
+  // before it counts.
+  b += header - kHeader;
+  bytes.remove_prefix(header - kHeader);
   const bool panorama = (parts & kPartPanorama) != 0, spectrum = (parts & kPartSpectrum) != 0;
   const std::size_t spectrum_at = panorama ? kCodesAt + kPanoramaSize : kPanoramaAt;
   if (bytes.size() != spectrum_at + (spectrum ? 4 * std::size_t(kSpectrumSize) : 0)) return kNever;

@@ -8,6 +8,7 @@
 
 #include "common/base64.hpp"
 #include "common/byte_io.hpp"
+#include "common/hash.hpp"
 #include "features/laplace_spectrum.hpp"
 #include "features/panorama_descriptor.hpp"
 #include "graph/panorama_codes.hpp"
@@ -24,6 +25,12 @@ constexpr std::uint8_t kPartPanorama = 1, kPartSpectrum = 2, kPartColour = 4;
 constexpr std::size_t kColourValues = 3 * kSearchColourBins;
 static_assert(kSearchColourAt + 3 * kSearchColourBins == kSearchDims, "colour ends the descriptor");
 constexpr std::uint16_t kKnownFlags = kFlagOpen | kFlagProxy | kFlagWideOpen | kFlagPooled;
+
+// Where a version-2 sketch keeps its digest, and the digest of its other bytes.
+constexpr std::size_t kDigestAt = 8, kDigestSize = 8;
+std::uint64_t sketch_digest(std::string_view bytes) {
+  return fnv1a_64(bytes.substr(kDigestAt + kDigestSize), fnv1a_64(bytes.substr(0, kDigestAt)));
+}
 
 bool in_graph_blocks(int k) {
   return k < kSearchPanoramaAt || k >= kSearchColourAt;
@@ -60,25 +67,30 @@ std::string write_shape_sketch(const ShapeSketch& s) {
   out.put(std::uint8_t((s.has_panorama ? kPartPanorama : 0) | (s.has_spectrum ? kPartSpectrum : 0) |
                        (s.has_colour ? kPartColour : 0)));
   out.put(std::uint16_t(s.flags & kKnownFlags));
+  out.put(std::uint64_t(0));  // the digest, once the rest is written
   for (float x : s.graph) out.put(x);
   if (s.has_panorama) write_panorama_codes(s.panorama.data(), out);
   if (s.has_spectrum)
     for (float x : s.spectrum) out.put(x);
-  return std::move(out.bytes());
+  std::string bytes = std::move(out.bytes());
+  reseal_sketch_digest(bytes);
+  return bytes;
 }
 
 void read_shape_sketch(std::string_view bytes, ShapeSketch& s) {
   ByteReader in(bytes, "arg_sketch");
   if (in.get_bytes(4) != std::string_view(kMagic, 4)) in.fail("not a sketch (no ARGS magic)");
   const auto version = in.get<std::uint8_t>();
-  if (version != kSketchVersion)
-    in.fail("sketch version " + std::to_string(version) + ", this library reads version " +
+  if (sketch_header_size(version) == 0)
+    in.fail("sketch version " + std::to_string(version) + ", this library reads versions 1 to " +
             std::to_string(kSketchVersion));
   const auto parts = in.get<std::uint8_t>();
   if (parts & ~(kPartPanorama | kPartSpectrum | kPartColour))
     in.fail("unknown parts in the sketch");
   s.flags = in.get<std::uint16_t>();
   if (s.flags & ~kKnownFlags) in.fail("unknown summary flags in the sketch");
+  if (version >= 2 && in.get<std::uint64_t>() != sketch_digest(bytes))
+    in.fail("digest mismatch (corrupted sketch)");
   for (float& x : s.graph) {
     x = in.get<float>();
     if (!std::isfinite(x) || x < 0) in.fail("graph block value negative or not finite");
@@ -103,6 +115,14 @@ void read_shape_sketch(std::string_view bytes, ShapeSketch& s) {
 void validate_sketch_bytes(std::string_view bytes) {
   ShapeSketch check;
   read_shape_sketch(bytes, check);
+}
+
+void reseal_sketch_digest(std::string& bytes) {
+  if (bytes.size() < kDigestAt + kDigestSize || bytes[4] != 2)
+    throw InputError("arg_sketch: not a version-2 sketch header");
+  ByteWriter digest;
+  digest.put(sketch_digest(bytes));
+  bytes.replace(kDigestAt, kDigestSize, digest.bytes());
 }
 
 std::string sketch_to_text(std::string_view bytes) {

@@ -37,17 +37,27 @@ struct ShapeSketch {
 // left out, so the sketch always reads back.
 ShapeSketch shape_sketch(const ArgGraph& graph);
 
-// Bytes: "ARGS", version 1, a byte of parts (1 panorama, 2 spectrum, 4 colour), the flags
-// (uint16), the graph blocks (float32, finite, >= 0; colour's zero without colour), the
-// panorama's codes (graph/panorama_codes.hpp), the spectrum (float32 in [1e-6, 1e3]);
-// little-endian, nothing after.
-inline constexpr std::uint8_t kSketchVersion = 1;
+// Bytes: "ARGS", the version (2), a byte of parts (1 panorama, 2 spectrum, 4 colour), the flags
+// (uint16), a digest (uint64: FNV-1a over every other byte, so a changed byte is refused), the
+// graph blocks (float32, finite, >= 0; colour's zero without colour), the panorama's codes
+// (graph/panorama_codes.hpp), the spectrum (float32 in [1e-6, 1e3]); little-endian, nothing
+// after. Version 1 (arg 0.2.0's stored sketch columns) is the same without the digest: still
+// read, never written.
+inline constexpr std::uint8_t kSketchVersion = 2;
+// Bytes before the graph blocks in a sketch of `version` (0 for a version not read here).
+inline constexpr std::size_t sketch_header_size(std::uint8_t version) {
+  return version == 1 ? 8 : version == 2 ? 16 : 0;
+}
 std::string write_shape_sketch(const ShapeSketch& sketch);
-// Strict: every byte checked (InputError naming what is wrong and where); allocates nothing
-// unless it fails.
+// Strict: every byte checked (InputError naming what is wrong and where; a version-2 sketch's
+// digest first); allocates nothing unless it fails.
 void read_shape_sketch(std::string_view bytes, ShapeSketch& out);
 // read_shape_sketch's checks alone (input of the text and binary forms, what arg_sketch made).
 void validate_sketch_bytes(std::string_view bytes);
+// Recomputes a version-2 sketch's digest in place, so that bytes changed on purpose pass the
+// digest check and reach the others. For tests and fuzzing only; throws InputError when the
+// bytes are not a version-2 sketch's header at least.
+void reseal_sketch_digest(std::string& bytes);
 
 // Text form: "sketch1:" then the bytes in padded base64; the reader accepts exactly that and
 // checks the bytes as read_shape_sketch does, returning them.

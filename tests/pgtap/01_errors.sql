@@ -2,7 +2,7 @@
 -- still answers a query: no C++ exception and no crash crosses into PostgreSQL.
 BEGIN;
 CREATE EXTENSION IF NOT EXISTS arg CASCADE;
-SELECT plan(43);
+SELECT plan(45);
 
 CREATE TEMP TABLE session AS SELECT pg_backend_pid() AS pid;
 CREATE TEMP TABLE fixture AS
@@ -111,6 +111,33 @@ SELECT is(pg_temp.sqlstate_of('SELECT arg_build(mesh) FROM big'), '57014',
           'a build that runs past statement_timeout is cancelled (57014)');
 RESET statement_timeout;
 SELECT pg_temp.still_answers('a cancelled build');
+
+-- A sketch carries a digest: any changed bit of its bytes is refused (22P02) on input, while a
+-- version-1 sketch (arg 0.2.0's, no digest) still reads as the same sketch.
+CREATE FUNCTION pg_temp.sketch_text(b bytea) RETURNS text LANGUAGE sql AS $$
+  SELECT 'sketch1:' || translate(encode(b, 'base64'), E'\n', '') $$;
+CREATE FUNCTION pg_temp.accepted_flips(b bytea, n int) RETURNS int LANGUAGE plpgsql AS $$
+DECLARE
+  at int;
+  accepted int := 0;
+BEGIN
+  FOR k IN 1..n LOOP
+    at := (k * 7919) % length(b);
+    BEGIN
+      PERFORM pg_temp.sketch_text(set_byte(b, at, get_byte(b, at) # (1 << (k % 8))))::arg_sketch;
+      accepted := accepted + 1;
+    EXCEPTION WHEN invalid_text_representation THEN
+    END;
+  END LOOP;
+  RETURN accepted;
+END $$;
+SELECT is(pg_temp.accepted_flips((SELECT arg_sketch_send(arg_sketch(descr)) FROM fixture), 400), 0,
+          'none of 400 sketches with one bit changed is accepted');
+SELECT is((SELECT arg_sketch_dist(pg_temp.sketch_text(substr(b, 1, 4) || '\x01'::bytea ||
+                                                      substr(b, 6, 3) || substr(b, 17))::arg_sketch,
+                                  arg_sketch(descr))
+           FROM fixture, LATERAL (SELECT arg_sketch_send(arg_sketch(descr)) AS b) s),
+          0::float8, 'a version-1 sketch (no digest) still reads, as the same sketch');
 
 SELECT is(pg_backend_pid(), (SELECT pid FROM session), 'the same backend answered every query');
 

@@ -42,8 +42,25 @@ void put_float(std::string& bytes, std::size_t at, float x) {
   for (int i = 0; i < 4; ++i) bytes[at + std::size_t(i)] = char((bits >> (8 * i)) & 0xff);
 }
 
+// Bytes with `change` made and the digest sealed again, so that a check after the digest's sees
+// the change.
+template <typename Change>
+std::string changed(const std::string& bytes, Change change) {
+  std::string b = bytes;
+  change(b);
+  reseal_sketch_digest(b);
+  return b;
+}
+
+// The same sketch in version 1 (arg 0.2.0's stored columns): no digest.
+std::string as_version_1(const std::string& bytes) {
+  std::string b = bytes.substr(0, 8) + bytes.substr(16);
+  b[4] = 1;
+  return b;
+}
+
 // Where the parts start in a sketch with every part.
-constexpr std::size_t kGraphAt = 8, kPanoramaAt = kGraphAt + 4 * kSketchGraphDims,
+constexpr std::size_t kGraphAt = 16, kPanoramaAt = kGraphAt + 4 * kSketchGraphDims,
                       kSpectrumAt = kPanoramaAt + kPanoramaCodesSize,
                       kFullSize = kSpectrumAt + 4 * kSpectrumSize;
 
@@ -138,26 +155,63 @@ TEST(ShapeSketch, RefusesEveryMalformedByte) {
   refused(good + '\0', "a byte after the end");
   std::string b = good;
   b[0] = 'X', refused(b, "magic");
-  b = good, b[4] = 2, refused(b, "version");
-  b = good, b[5] |= 8, refused(b, "unknown part");
-  b = good, b[7] = char(0x80), refused(b, "unknown flag");
+  b = good, b[4] = 3, refused(b, "version");
+  refused(changed(good, [](std::string& x) { x[5] |= 8; }), "unknown part");
+  refused(changed(good, [](std::string& x) { x[7] = char(0x80); }), "unknown flag");
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  b = good, put_float(b, kGraphAt + 8, nan), refused(b, "NaN graph value");
-  b = good, put_float(b, kGraphAt, -1.0f), refused(b, "negative graph value");
-  b = good, put_float(b, kPanoramaAt, 2.0f), refused(b, "panorama scale above 1");
-  b = good, put_float(b, kPanoramaAt, nan), refused(b, "NaN panorama scale");
-  b = good, put_float(b, kSpectrumAt, 0.0f), refused(b, "zero eigenvalue");
-  b = good, put_float(b, kSpectrumAt + 4, std::numeric_limits<float>::infinity()),
-  refused(b, "infinite eigenvalue");
+  auto with_float = [&](std::size_t at, float x) {
+    return changed(good, [&](std::string& y) { put_float(y, at, x); });
+  };
+  refused(with_float(kGraphAt + 8, nan), "NaN graph value");
+  refused(with_float(kGraphAt, -1.0f), "negative graph value");
+  refused(with_float(kPanoramaAt, 2.0f), "panorama scale above 1");
+  refused(with_float(kPanoramaAt, nan), "NaN panorama scale");
+  refused(with_float(kSpectrumAt, 0.0f), "zero eigenvalue");
+  refused(with_float(kSpectrumAt + 4, std::numeric_limits<float>::infinity()),
+          "infinite eigenvalue");
   // A block whose largest code is not 255 is not what the writer makes.
-  b = good;
-  for (std::size_t k = kPanoramaAt + 4 * kPanoramaBlocks;
-       k < kPanoramaAt + 4 * kPanoramaBlocks + kPanoramaPerView; ++k)
-    if (static_cast<unsigned char>(b[k]) == 255) b[k] = char(254);
-  refused(b, "non-canonical codes");
+  refused(changed(good,
+                  [](std::string& x) {
+                    for (std::size_t k = kPanoramaAt + 4 * kPanoramaBlocks;
+                         k < kPanoramaAt + 4 * kPanoramaBlocks + kPanoramaPerView; ++k)
+                      if (static_cast<unsigned char>(x[k]) == 255) x[k] = char(254);
+                  }),
+          "non-canonical codes");
   // Without the panorama part, its bytes are trailing bytes.
-  b = good, b[5] = 2, refused(b, "parts say no panorama");
+  refused(changed(good, [](std::string& x) { x[5] = 2; }), "parts say no panorama");
   EXPECT_NO_THROW(read(good));
+}
+
+TEST(ShapeSketch, ItsDigestRefusesAnyChangedByte) {
+  const std::string good = write_shape_sketch(shape_sketch(stored(2)));
+  ASSERT_EQ(good.size(), kFullSize);
+  EXPECT_EQ(good[4], char(kSketchVersion));
+  for (std::size_t at = 0; at < good.size(); ++at)
+    for (unsigned char flip : {0x01, 0x80}) {
+      std::string b = good;
+      b[at] = char(static_cast<unsigned char>(b[at]) ^ flip);
+      ShapeSketch s;
+      EXPECT_THROW(read_shape_sketch(b, s), InputError) << "byte " << at << " ^ " << int(flip);
+    }
+  std::string b = good;
+  b[kSpectrumAt] = char(static_cast<unsigned char>(b[kSpectrumAt]) ^ 1);
+  try {
+    read(b);
+    ADD_FAILURE() << "a changed eigenvalue was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("digest mismatch"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ShapeSketch, Version1SketchesStillReadAsTheSameSketch) {
+  for (int which : {0, 2}) {
+    const ShapeSketch s = shape_sketch(stored(which));
+    const std::string v2 = write_shape_sketch(s), v1 = as_version_1(v2);
+    EXPECT_EQ(v1.size() + 8, v2.size());
+    EXPECT_EQ(write_shape_sketch(read(v1)), v2);  // read, then written as version 2
+    EXPECT_EQ(sketch_distance(read(v1), s), 0.0);
+    EXPECT_EQ(sketch_from_text(sketch_to_text(v1)), v1);
+  }
 }
 
 TEST(ShapeSketch, TextFormRoundTripsAndIsChecked) {
