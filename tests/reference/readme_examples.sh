@@ -64,14 +64,14 @@ done
 
 # What the client README's session expects beside it: scans/ with a generated catalogue (two
 # models a class) and a file that is not a mesh.
-"$build/argtool" gen --out "$scratch/work/scans" --per-class 2 >/dev/null
-printf 'OFF\nthis is not a mesh\n' >"$scratch/work/scans/notes.off"
+"$build/argtool" gen --out "$scratch/demo/scans" --per-class 2 >/dev/null
+printf 'OFF\nthis is not a mesh\n' >"$scratch/demo/scans/notes.off"
 # A block that imports is an example; the others show signatures.
 for f in "$scratch"/readme/*.python "$scratch"/client/*.python; do
   [[ -e "$f" ]] && grep -qE '^(import|from) ' "$f" || continue
   where=$([[ $f == */client/* ]] && echo clients/python/README.md || echo README.md)
   what="$where python block $(basename "$f" .python): $(grep -m1 -vE '^(import|from|$)' "$f" | cut -c1-50)"
-  out=$(cd "$scratch/work" && PGDATABASE=museum PYTHONPATH="$OLDPWD/clients/python" \
+  out=$(cd "$scratch/demo" && PGDATABASE=museum PYTHONPATH="$OLDPWD/clients/python" \
           PYTHONDONTWRITEBYTECODE=1 timeout 300 "$python" "$f" 2>&1)
   result "$what" $? "$out"
 done
