@@ -10,6 +10,7 @@
 // is WAL-logged with generic WAL records.
 #pragma once
 
+#include "search/coarse_sketch.hpp"
 #include "search/shape_sketch.hpp"
 
 #include "arg_bridge.hpp"
@@ -73,13 +74,14 @@ struct CellRef {
   BlockNumber first_list_page;
 };
 
-// An index's cells, read from its pages: refs[i] and, when read with centres, centres[i]
-// (unset without a centre). The centres are kept decoded in the index's relcache entry
-// (rd_amcache) until the relation is rebuilt: never freed by the caller.
+// An index's cells, read from its pages: refs[i] and, when read with centres, centres[i] and
+// their coarse sides coarse[i] (unset without a centre). The centres are kept decoded in the
+// index's relcache entry (rd_amcache) until the relation is rebuilt: never freed by the caller.
 struct Cells {
   uint32 count;
   CellRef* refs;
   const arg::ShapeSketch* centres;  // nullptr when read without centres
+  const arg::CoarseQuery* coarse;   // likewise
 };
 
 // Reads and checks the metapage; raises XX002 (index corrupted) or, for another page version,

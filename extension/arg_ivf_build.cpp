@@ -82,7 +82,8 @@ void file_batch(Filing& f) {
   if (cells.centres && cells.refs[0].has_centre) {
     Outcome out = guarded([&] {
       arg::parallel_for(std::size_t(f.count), f.threads, [&](std::size_t i) {
-        f.cell_of[i] = uint32(arg::nearest_cell(f.sketches[i], cells.centres, cells.count));
+        f.cell_of[i] =
+            uint32(arg::nearest_cell(f.sketches[i], cells.centres, cells.count, cells.coarse));
       });
     });
     raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot file arg_sketch");
@@ -234,6 +235,11 @@ IndexBuildResult* arg_ivf_build(Relation heap, Relation index, IndexInfo* info) 
   // Second pass: every row to its nearest centre's list.
   Cells cell_set = read_cells(index, false);
   cell_set.centres = centres;
+  // palloc'd, as everything that an error (a cancel while filing) may leave behind.
+  auto* coarse = static_cast<arg::CoarseQuery*>(
+      MemoryContextAllocHuge(CurrentMemoryContext, sizeof(arg::CoarseQuery) * (count + 1)));
+  for (uint32 c = 0; c < count; ++c) coarse[c] = arg::coarse_query(centres[c]);
+  cell_set.coarse = coarse;
   Filing* f = static_cast<Filing*>(palloc0(sizeof(Filing)));
   f->index = index;
   f->of_arg = of_arg;

@@ -25,8 +25,8 @@ bool arg_ivf_insert(Relation index, Datum* values, bool* isnull, ItemPointer hea
   const Cells cells = read_cells(index, true);
   std::size_t cell = 0;
   if (cells.refs[0].has_centre) {
-    argpg::Outcome out =
-        argpg::guarded([&] { cell = arg::nearest_cell(*sketch, cells.centres, cells.count); });
+    argpg::Outcome out = argpg::guarded(
+        [&] { cell = arg::nearest_cell(*sketch, cells.centres, cells.count, cells.coarse); });
     argpg::raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot compare arg_sketch values");
   }
   append_entry(index, cells.refs[cell], heap_tid, VARDATA_ANY(v), VARSIZE_ANY_EXHDR(v),

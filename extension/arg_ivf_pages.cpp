@@ -144,8 +144,14 @@ namespace {
 struct CentreCache {
   Oid file;
   uint32 cells, cell_pages;
+  arg::CoarseQuery* coarse;  // `cells` of them, after the centres
   arg::ShapeSketch centres[FLEXIBLE_ARRAY_MEMBER];
 };
+
+Size centre_cache_size(uint32 cells) {
+  return offsetof(CentreCache, centres) + sizeof(arg::ShapeSketch) * cells +
+         sizeof(arg::CoarseQuery) * cells;
+}
 
 Oid file_of(Relation index) {
 #if PG_VERSION_NUM >= 160000
@@ -160,7 +166,8 @@ Oid file_of(Relation index) {
 namespace {
 
 // Reads every cell page into `refs` and, when `centres` is given, decodes the centres into it.
-void read_cell_pages(Relation index, const Meta& meta, CellRef* refs, arg::ShapeSketch* centres) {
+void read_cell_pages(Relation index, const Meta& meta, CellRef* refs, arg::ShapeSketch* centres,
+                     arg::CoarseQuery* coarse) {
   BlockNumber blocks = RelationGetNumberOfBlocks(index);
   const BlockNumber first_list_page = meta.cell_pages + 1;
   uint32 seen = 0;
@@ -179,8 +186,10 @@ void read_cell_pages(Relation index, const Meta& meta, CellRef* refs, arg::Shape
       refs[seen] = {block, item, size > 0, head.first, head.last, first_list_page};
       if (size == 0 && meta.cells != 1) corrupted(index, block, "cell without a centre");
       if (centres && size > 0) {
-        Outcome out =
-            guarded([&] { arg::read_shape_sketch(std::string_view(centre, size), centres[seen]); });
+        Outcome out = guarded([&] {
+          arg::read_shape_sketch(std::string_view(centre, size), centres[seen]);
+          coarse[seen] = arg::coarse_query(centres[seen]);
+        });
         if (out.failure != Failure::None)
           corrupted(index, block, psprintf("cell centre unreadable (%s)", out.message));
       }
@@ -203,13 +212,16 @@ Cells read_cells(Relation index, bool with_centres) {
                       cache->cell_pages == meta.cell_pages;
   // Decoded straight into the relcache entry's memory, freed again should a page fail its
   // checks (a corrupt index read again and again would otherwise grow the entry each time).
-  CentreCache* const fill =
-      with_centres && !cached ? static_cast<CentreCache*>(MemoryContextAllocHuge(
-                                    index->rd_indexcxt, offsetof(CentreCache, centres) +
-                                                            sizeof(arg::ShapeSketch) * meta.cells))
-                              : nullptr;
+  CentreCache* const fill = with_centres && !cached
+                                ? static_cast<CentreCache*>(MemoryContextAllocHuge(
+                                      index->rd_indexcxt, centre_cache_size(meta.cells)))
+                                : nullptr;
+  if (fill) fill->coarse = reinterpret_cast<arg::CoarseQuery*>(fill->centres + meta.cells);
   PG_TRY();
-  { read_cell_pages(index, meta, cells.refs, fill ? fill->centres : nullptr); }
+  {
+    read_cell_pages(index, meta, cells.refs, fill ? fill->centres : nullptr,
+                    fill ? fill->coarse : nullptr);
+  }
   PG_CATCH();
   {
     if (fill) pfree(fill);
@@ -217,6 +229,7 @@ Cells read_cells(Relation index, bool with_centres) {
   }
   PG_END_TRY();
   cells.centres = nullptr;
+  cells.coarse = nullptr;
   if (fill) {
     fill->file = file_of(index);
     fill->cells = meta.cells;
@@ -224,8 +237,10 @@ Cells read_cells(Relation index, bool with_centres) {
     if (index->rd_amcache) pfree(index->rd_amcache);
     index->rd_amcache = fill;
     cells.centres = fill->centres;
+    cells.coarse = fill->coarse;
   } else if (with_centres) {
     cells.centres = cache->centres;
+    cells.coarse = cache->coarse;
   }
   return cells;
 }

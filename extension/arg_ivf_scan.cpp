@@ -285,7 +285,8 @@ void start(IndexScanDesc scan, ScanState& s) {
   } else {
     argpg::Outcome out = argpg::guarded([&] {
       uint32 k = 0;
-      for (std::size_t c : arg::cells_to_probe(*s.query, cells.centres, cells.count, cells.count))
+      for (std::size_t c :
+           arg::cells_to_probe(*s.query, cells.centres, cells.count, cells.count, cells.coarse))
         s.cell_order[k++] = uint32(c);
     });
     argpg::raise_if_failed(out, ERRCODE_DATA_CORRUPTED, "cannot compare arg_sketch values");

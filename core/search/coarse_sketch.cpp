@@ -121,4 +121,35 @@ double coarse_sketch_distance(const CoarseQuery& q, std::string_view bytes) {
   return std::isnan(d) ? kNever : d;
 }
 
+double coarse_distance(const CoarseQuery& a, const CoarseQuery& b) {
+  const TermWeights t =
+      term_weights(Weights{}, std::uint16_t(a.flags | b.flags), a.has_panorama && b.has_panorama,
+                   a.has_spectrum && b.has_spectrum);
+  double pano = 0, spec = 0;
+  if (t.panorama > 0) {
+    double best = 1.0;
+    constexpr std::size_t kPerFrame = kCoarsePanorama / 2;
+    for (std::size_t frame = 0; frame < 2; ++frame) {
+      double l1 = 0;
+      for (std::size_t k = frame * kPerFrame; k < (frame + 1) * kPerFrame; ++k)
+        l1 += std::fabs(double(a.panorama[k]) - double(b.panorama[k]));
+      best = std::min(best, l1 / 6);
+    }
+    pano = best;
+  }
+  if (t.spectrum > 0) {
+    double sum = 0;
+    for (std::size_t i = 0; i < a.log_spectrum.size(); ++i) {
+      const double d = double(a.log_spectrum[i]) - double(b.log_spectrum[i]);
+      sum += d * d;
+    }
+    spec = std::min(1.0, std::sqrt(sum) / 5);
+  }
+  const std::size_t end =
+      a.has_colour && b.has_colour ? kSketchGraphDims : kSketchGraphDims - kColourValues;
+  double l1 = 0;
+  for (std::size_t k = 0; k < end; ++k) l1 += std::fabs(double(a.graph[k]) - double(b.graph[k]));
+  return mix_terms(t, kSketchGraphMix * l1, pano, spec);
+}
+
 }  // namespace arg

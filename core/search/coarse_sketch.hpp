@@ -37,4 +37,8 @@ CoarseQuery coarse_query(const ShapeSketch& query);
 // +infinity, never a read out of bounds. An order of candidates, not a value to report.
 double coarse_sketch_distance(const CoarseQuery& query, std::string_view bytes);
 
+// The same distance between two prepared sides (a row and the cell centres an index files it
+// among): both panoramas' lowest frequencies as their sketches hold them.
+double coarse_distance(const CoarseQuery& a, const CoarseQuery& b);
+
 }  // namespace arg

@@ -45,22 +45,54 @@ std::vector<std::size_t> choose_cell_centres(const ShapeSketch* sample, std::siz
   return centres;
 }
 
-std::size_t nearest_cell(const ShapeSketch& sketch, const ShapeSketch* centres, std::size_t count) {
-  std::size_t best = 0;
-  double best_d = sketch_distance(sketch, centres[0]);
-  for (std::size_t c = 1; c < count; ++c) {
-    const double d = sketch_distance(sketch, centres[c]);
-    if (d < best_d) best = c, best_d = d;
+std::vector<CoarseQuery> coarse_centres(const ShapeSketch* centres, std::size_t count) {
+  std::vector<CoarseQuery> out(count);
+  for (std::size_t c = 0; c < count; ++c) out[c] = coarse_query(centres[c]);
+  return out;
+}
+
+namespace {
+
+// Every centre by the coarse distance, nearest first (ties by index), the first `refined` of
+// them then ordered by the sketch distance.
+std::vector<std::pair<double, std::size_t>> ranked_centres(const ShapeSketch& sketch,
+                                                           const ShapeSketch* centres,
+                                                           std::size_t count, std::size_t refined,
+                                                           std::size_t keep,
+                                                           const CoarseQuery* coarse) {
+  std::vector<std::pair<double, std::size_t>> by_distance(count);
+  if (coarse && count > kCellsRefined) {
+    const CoarseQuery q = coarse_query(sketch);
+    for (std::size_t c = 0; c < count; ++c) by_distance[c] = {coarse_distance(q, coarse[c]), c};
+    refined = std::min(refined, count);
+    keep = std::max(keep, refined);
+    std::partial_sort(by_distance.begin(), by_distance.begin() + std::ptrdiff_t(keep),
+                      by_distance.end());
+    for (std::size_t k = 0; k < refined; ++k)
+      by_distance[k].first = sketch_distance(sketch, centres[by_distance[k].second]);
+    std::sort(by_distance.begin(), by_distance.begin() + std::ptrdiff_t(refined));
+  } else {
+    for (std::size_t c = 0; c < count; ++c)
+      by_distance[c] = {sketch_distance(sketch, centres[c]), c};
+    std::partial_sort(by_distance.begin(), by_distance.begin() + std::ptrdiff_t(keep),
+                      by_distance.end());
   }
-  return best;
+  return by_distance;
+}
+
+}  // namespace
+
+std::size_t nearest_cell(const ShapeSketch& sketch, const ShapeSketch* centres, std::size_t count,
+                         const CoarseQuery* coarse) {
+  return ranked_centres(sketch, centres, count, kCellsRefined, 1, coarse)[0].second;
 }
 
 std::vector<std::size_t> cells_to_probe(const ShapeSketch& query, const ShapeSketch* centres,
-                                        std::size_t count, std::size_t probes) {
-  std::vector<std::pair<double, std::size_t>> by_distance(count);
-  for (std::size_t c = 0; c < count; ++c) by_distance[c] = {sketch_distance(query, centres[c]), c};
+                                        std::size_t count, std::size_t probes,
+                                        const CoarseQuery* coarse) {
   const std::size_t keep = std::min(probes, count);
-  std::partial_sort(by_distance.begin(), by_distance.begin() + keep, by_distance.end());
+  const std::vector<std::pair<double, std::size_t>> by_distance =
+      ranked_centres(query, centres, count, kCellsRefined, keep, coarse);
   std::vector<std::size_t> cells(keep);
   for (std::size_t k = 0; k < keep; ++k) cells[k] = by_distance[k].second;
   return cells;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common/limits.hpp"
+#include "search/coarse_sketch.hpp"
 #include "search/shape_sketch.hpp"
 
 namespace arg {
@@ -24,13 +25,27 @@ std::vector<std::size_t> choose_cell_centres(const ShapeSketch* sample, std::siz
                                              std::size_t count, std::uint64_t seed,
                                              const StopRequested& stop = {});
 
+// Among more centres than this, filing and probing rank them all by the coarse distance
+// (coarse_sketch.hpp: about a tenth of the sketch distance's time) and only this many nearest
+// by the sketch distance. A million rows make a thousand cells, and filing each row by a
+// thousand sketch distances took most of the build (docs/BENCHMARKS.md "A million rows").
+inline constexpr std::size_t kCellsRefined = 32;
+
+// The centres' coarse sides, coarse_centres[c] = coarse_query(centres[c]).
+std::vector<CoarseQuery> coarse_centres(const ShapeSketch* centres, std::size_t count);
+
 // The cell of `sketch`: the index of its nearest centre by sketch_distance with default
-// weights (the lowest index among equals). `count` must be at least 1.
-std::size_t nearest_cell(const ShapeSketch& sketch, const ShapeSketch* centres, std::size_t count);
+// weights (the lowest index among equals), among the kCellsRefined nearest by the coarse
+// distance when `coarse` (the centres' coarse sides) is given. `count` must be at least 1.
+std::size_t nearest_cell(const ShapeSketch& sketch, const ShapeSketch* centres, std::size_t count,
+                         const CoarseQuery* coarse = nullptr);
 
 // The `probes` cells nearest to `query` (all `count` of them when probes >= count), nearest
-// first, ties by index: the cells a search reads.
+// first, ties by index: the cells a search reads. With `coarse`, the cells are ranked by the
+// coarse distance and the first kCellsRefined of them by the sketch distance (the ones a
+// search reads first: arg.ivf_probes is at most a few dozen).
 std::vector<std::size_t> cells_to_probe(const ShapeSketch& query, const ShapeSketch* centres,
-                                        std::size_t count, std::size_t probes);
+                                        std::size_t count, std::size_t probes,
+                                        const CoarseQuery* coarse = nullptr);
 
 }  // namespace arg

@@ -20,6 +20,21 @@ TEST(CoarseSketch, IsZeroForTheQuerysOwnSketch) {
   }
 }
 
+TEST(CoarseSketch, BetweenPreparedSidesEqualsTheDistanceReadFromBytes) {
+  // Centres are compared with both sides prepared: the same number as from the entry's bytes,
+  // and symmetric.
+  const std::vector<ArgGraph>& g = test::stored_graphs();
+  for (std::size_t i = 0; i < g.size(); ++i)
+    for (std::size_t j = 0; j < g.size(); ++j) {
+      const ShapeSketch a = shape_sketch(g[i]), b = shape_sketch(g[j]);
+      const double from_bytes = coarse_sketch_distance(coarse_query(a), write_shape_sketch(b));
+      EXPECT_NEAR(coarse_distance(coarse_query(a), coarse_query(b)), from_bytes, 1e-6)
+          << i << " " << j;
+      EXPECT_EQ(coarse_distance(coarse_query(a), coarse_query(b)),
+                coarse_distance(coarse_query(b), coarse_query(a)));
+    }
+}
+
 TEST(CoarseSketch, OrdersAsTheSketchDistanceDoesForClearCases) {
   const std::vector<ArgGraph>& g =
       test::stored_graphs();  // two humans, fourleg, octopus, cup, chair

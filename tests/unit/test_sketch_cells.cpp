@@ -82,6 +82,32 @@ TEST(SketchCells, FilingAndProbingFollowTheDistance) {
   }
 }
 
+TEST(SketchCells, ManyCentresRankedCoarselyFirstKeepTheNearest) {
+  // More centres than kCellsRefined: the coarse pass ranks them all, the sketch distance the
+  // nearest few. Each sketch is its own centre here (several copies of each), so the coarse
+  // pass must keep the exact one among those it refines.
+  const auto& s = sketches();
+  std::vector<ShapeSketch> centres;
+  while (centres.size() <= kCellsRefined + 8)
+    for (const ShapeSketch& x : s) centres.push_back(x);
+  const std::vector<CoarseQuery> coarse = coarse_centres(centres.data(), centres.size());
+  ASSERT_EQ(coarse.size(), centres.size());
+  for (std::size_t m = 0; m < s.size(); ++m) {
+    const std::size_t exact = nearest_cell(s[m], centres.data(), centres.size());
+    EXPECT_EQ(nearest_cell(s[m], centres.data(), centres.size(), coarse.data()), exact);
+    EXPECT_EQ(sketch_distance(s[m], centres[exact]), 0.0);
+    const std::vector<std::size_t> fast =
+        cells_to_probe(s[m], centres.data(), centres.size(), 4, coarse.data());
+    const std::vector<std::size_t> slow = cells_to_probe(s[m], centres.data(), centres.size(), 4);
+    EXPECT_EQ(fast, slow);
+    // A full order still names every cell once.
+    std::vector<std::size_t> every =
+        cells_to_probe(s[m], centres.data(), centres.size(), centres.size(), coarse.data());
+    std::sort(every.begin(), every.end());
+    for (std::size_t c = 0; c < every.size(); ++c) EXPECT_EQ(every[c], c);
+  }
+}
+
 TEST(SketchCells, SeedingStopsWhenAsked) {
   int polls = 0;
   EXPECT_THROW(
