@@ -8,12 +8,17 @@
 #
 #   bench/index_bench.sh ROWS.copy N QUERIES.copy [--existing]
 #
-# ROWS.copy: scale-gen rows (id, museum, period, class, arg), of which the first N are loaded;
-# QUERIES.copy: rows of the same form, the query values (not in the table).
+# ROWS.copy: scale-gen rows (id, museum, period, class, arg), of which the first N are loaded
+# (- reads them from standard input: a million rows are about 23 GB of text, so scale-gen
+# writes them to a pipe); QUERIES.copy: rows of the same form, the query values (not in the
+# table).
 # Without --existing it starts a throwaway cluster under $BUILD_DIR/pg-index-bench
 # (shared_buffers 4GB) and stops it at the end. Environment:
 #   K=10  PROBES="8 16"  CANDIDATES="50 100 200"  FILTERS="none 10% 1%"  RUNS=2
 #   REUSE=1   keep the table, the ground truth and the index between runs (same N)
+#   TRUTH=FILE  the ground truth as `argtool knn` writes it (filter, query id, ids), instead
+#               of brute force in SQL (one parallel scan a query: hours at a million rows)
+#   DB=arg_index_bench  the database (one per table size keeps each one's table)
 # Each query is run once to warm the caches, then RUNS times; latencies are the server's
 # (clock_timestamp around the query in PL/pgSQL), one backend, no parallel workers.
 set -euo pipefail
@@ -35,7 +40,7 @@ if [[ "${4:-}" != --existing ]]; then
   # shellcheck disable=SC1091
   source "$pgdir/env"
 fi
-db=arg_index_bench
+db=${DB:-arg_index_bench}
 psql -X -q -d postgres -tAc "SELECT 1 FROM pg_database WHERE datname = '$db'" | grep -q 1 ||
   psql -X -q -d postgres -c "CREATE DATABASE $db"
 q() { psql -X -q -v ON_ERROR_STOP=1 -d $db "$@"; }
@@ -57,11 +62,14 @@ if [[ "${REUSE:-0}" != 1 || $loaded -ne $n ]]; then
     -c "CREATE TABLE queries (id bigint PRIMARY KEY, museum text, period text, class text, descr arg)" \
     -c "CREATE TABLE truth (filter text, qid bigint, ids bigint[], PRIMARY KEY (filter, qid))"
   t0=$(now_ms)
-  head -n "$n" "$rows_file" | q -c "COPY objects FROM STDIN"
+  if [[ $rows_file == - ]]; then head -n "$n"; else head -n "$n" "$rows_file"; fi |
+    q -c "COPY objects FROM STDIN"
   echo "index_bench: COPY of $n rows in $(( $(now_ms) - t0 )) ms"
   q -c "COPY queries FROM STDIN" <"$queries_file"
   q -c "VACUUM ANALYZE objects" -c "VACUUM ANALYZE queries"
+  if [[ -n ${TRUTH:-} ]]; then q -c "COPY truth FROM STDIN" <"$TRUTH"; fi
   for f in $filters; do
+    [[ -n ${TRUTH:-} ]] && break
     t0=$(now_ms)
     # Brute force: every row compared (parallel workers allowed), ties by id.
     q -c "SET enable_indexscan = off" -c "

@@ -89,4 +89,17 @@ check "a soup of two boxes builds on a proxy through the lazily loaded OpenVDB" 
 "$argtool" eval --labels "$work/gen/labels.csv" --method d2 > /dev/null 2> "$work/progress.txt"
 check "eval's progress in a file has lines" grep -qE '^build .*[0-9]+/[0-9]+$' "$work/progress.txt"
 check "and no carriage returns" bash -c "! grep -q $'\r' '$work/progress.txt'"
+
+# 6. knn: brute-force truth over a stream of scale-gen rows, as the index benchmarks use it.
+"$argtool" scale-gen --count 12 --museums 3 --threads 2 --out "$work/rows.copy" > /dev/null 2>&1
+"$argtool" knn --rows - --queries "$work/rows.copy" --k 3 --filter "m1=M1" \
+  --out "$work/truth.tsv" < "$work/rows.copy" 2> /dev/null
+check "knn writes a row a query and filter" test "$(wc -l < "$work/truth.tsv")" -eq 24
+check "each query's nearest is itself (SIM 0)" awk -F'\t' '$1 == "none" {
+  split(substr($3, 2, length($3) - 2), ids, ","); if (ids[1] != $2 || length(ids) != 3) bad = 1 }
+  END { exit bad }' "$work/truth.tsv"
+awk -F'\t' '$2 == "M1" { print $1 }' "$work/rows.copy" | sort > "$work/m1.txt"
+check "a filter keeps only its museum's rows" bash -c "awk -F'\t' '\$1 == \"m1\" {
+  gsub(/[{}]/, \"\", \$3); n = split(\$3, ids, \",\"); for (i = 1; i <= n; ++i) print ids[i] }' \
+  '$work/truth.tsv' | sort -u | comm -23 - '$work/m1.txt' | grep -q . && exit 1 || exit 0"
 echo "1..$n"
