@@ -37,7 +37,7 @@ set(ARG_METHOD_SOURCES
     match/similarity_terms.cpp match/subgraph.cpp match/term_weights.cpp match/weights.cpp
     search/coarse_sketch.cpp search/query_ranker.cpp search/search_descriptor.cpp
     search/shape_sketch.cpp
-    search/sketch_cells.cpp
+    search/ivf_page.cpp search/sketch_cells.cpp
     pipeline/build_arg.cpp pipeline/node_positions.cpp pipeline/pool_fragments.cpp
     pipeline/prepare_surface.cpp)
 set(ARG_GEN_SOURCES

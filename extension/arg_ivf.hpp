@@ -11,6 +11,7 @@
 #pragma once
 
 #include "search/coarse_sketch.hpp"
+#include "search/ivf_page.hpp"
 #include "search/shape_sketch.hpp"
 
 #include "arg_bridge.hpp"
@@ -29,14 +30,16 @@ extern "C" {
 
 namespace argpg::ivf {
 
-inline constexpr uint32 kMagic = 0x41524749;  // "ARGI"
-inline constexpr uint32 kVersion = 1;
-inline constexpr uint16 kPageId = 0xA6F1;  // in every page's special space
-enum PageKind : uint16 { kMetaPage = 1, kCellPage = 2, kListPage = 3 };
-
-// The largest sketch an entry or a centre may hold: three fit a page. A sketch with every part
-// is 2,596 bytes (2,588 in version 1, without the digest).
-inline constexpr Size kMaxSketchBytes = 2600;
+// The page format and its byte-level checks are the core's (search/ivf_page.hpp, fuzzed).
+using arg::ivf::kMagic;
+using arg::ivf::kMaxSketchBytes;
+using arg::ivf::kPageId;
+using arg::ivf::kVersion;
+enum PageKind : uint16 {
+  kMetaPage = uint16(arg::ivf::PageKind::kMeta),
+  kCellPage = uint16(arg::ivf::PageKind::kCell),
+  kListPage = uint16(arg::ivf::PageKind::kList)
+};
 
 // A page's special space.
 struct PageOpaque {
@@ -44,6 +47,19 @@ struct PageOpaque {
   uint16 kind;
   uint16 page_id;
 };
+
+// The core reads these structures from raw bytes at its own offsets: they must agree.
+static_assert(SizeOfPageHeaderData == arg::ivf::kPageHeaderSize &&
+                  sizeof(ItemIdData) == arg::ivf::kItemIdSize &&
+                  offsetof(PageHeaderData, pd_lower) == arg::ivf::kLowerAt &&
+                  offsetof(PageHeaderData, pd_upper) == arg::ivf::kUpperAt &&
+                  offsetof(PageHeaderData, pd_special) == arg::ivf::kSpecialAt &&
+                  offsetof(PageHeaderData, pd_pagesize_version) == arg::ivf::kSizeVersionAt,
+              "PostgreSQL's page layout is not the one search/ivf_page.hpp reads");
+static_assert(MAXALIGN(sizeof(PageOpaque)) == arg::ivf::kSpecialSize &&
+                  offsetof(PageOpaque, kind) == 4 && offsetof(PageOpaque, page_id) == 6 &&
+                  InvalidBlockNumber == arg::ivf::kNoBlock,
+              "the special space is not the one search/ivf_page.hpp reads");
 
 // The metapage's contents.
 struct Meta {
@@ -63,6 +79,9 @@ struct CellHead {
 struct EntryHead {
   ItemPointerData tid;
 };
+static_assert(sizeof(Meta) == arg::ivf::kMetaSize && sizeof(CellHead) == arg::ivf::kCellHeadSize &&
+                  sizeof(EntryHead) == arg::ivf::kEntryHeadSize,
+              "items are not the size search/ivf_page.hpp reads");
 
 // Where a cell is, its list, and its centre (when `has_centre`). List pages come after the
 // cell pages: a link below `first_list_page` is corrupt.

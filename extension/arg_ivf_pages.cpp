@@ -15,27 +15,53 @@ extern "C" {
 
 namespace argpg::ivf {
 
+namespace {
+
+const unsigned char* bytes_of(Page page) {
+  return reinterpret_cast<const unsigned char*>(page);
+}
+
+// A checked page's facts; raises XX002.
+arg::ivf::PageFacts page_facts(Relation index, Page page, BlockNumber block, PageKind kind) {
+  arg::ivf::PageFacts facts;
+  if (const char* wrong =
+          arg::ivf::check_page(bytes_of(page), BLCKSZ, arg::ivf::PageKind(kind), &facts))
+    corrupted(index, block, wrong);
+  return facts;
+}
+
+// An item of a page of `kind`: in range, in use, its bytes between the header's upper and
+// special offsets, of a length in [min_size, max_size].
+std::string_view item_bytes(Relation index, Page page, PageKind kind, BlockNumber block,
+                            OffsetNumber item, Size min_size, Size max_size, const char* what) {
+  const arg::ivf::PageFacts facts = page_facts(index, page, block, kind);
+  std::string_view bytes;
+  if (const char* wrong =
+          arg::ivf::page_item(bytes_of(page), facts, item, min_size, max_size, &bytes))
+    corrupted(index, block, psprintf("%s %s", what, wrong));
+  return bytes;
+}
+
+}  // namespace
+
 Meta read_meta(Relation index) {
   Buffer buf = ReadBuffer(index, 0);
   LockBuffer(buf, BUFFER_LOCK_SHARE);
   Page page = BufferGetPage(buf);
-  check_page(index, page, 0, kMetaPage);
-  Meta meta;
-  if (((PageHeader)page)->pd_lower < SizeOfPageHeaderData + sizeof(Meta))
-    corrupted(index, 0, "metapage too short");
-  std::memcpy(&meta, PageGetContents(page), sizeof meta);
+  const arg::ivf::PageFacts facts = page_facts(index, page, 0, kMetaPage);
+  arg::ivf::MetaFields fields;
+  const char* wrong = arg::ivf::read_meta(bytes_of(page), facts, &fields);
   UnlockReleaseBuffer(buf);
-  if (meta.magic != kMagic) corrupted(index, 0, "not an arg_ivf metapage");
-  if (meta.version != kVersion)
+  if (wrong) corrupted(index, 0, wrong);
+  if (fields.version != kVersion)
     ereport(ERROR, (errcode(ERRCODE_FEATURE_NOT_SUPPORTED),
                     errmsg("index \"%s\" has arg_ivf page version %u, this build reads %u",
-                           RelationGetRelationName(index), meta.version, kVersion),
+                           RelationGetRelationName(index), fields.version, kVersion),
                     errhint("REINDEX it.")));
-  const BlockNumber blocks = RelationGetNumberOfBlocks(index);
-  if (meta.cells < 1 || meta.cells > arg::kMaxSketchCells || meta.cell_pages < 1 ||
-      meta.cell_pages > meta.cells || meta.cell_pages >= blocks)
-    corrupted(index, 0, "cell counts out of range");
-  return meta;
+  if (const char* bad = arg::ivf::check_meta_counts(fields, RelationGetNumberOfBlocks(index),
+                                                    uint32(arg::kMaxSketchCells)))
+    corrupted(index, 0, bad);
+  return Meta{fields.magic, fields.version, fields.cells, fields.cell_pages};
 }
 
 void corrupted(Relation index, BlockNumber block, const char* what) {
@@ -47,45 +73,16 @@ void corrupted(Relation index, BlockNumber block, const char* what) {
 }
 
 void check_page(Relation index, Page page, BlockNumber block, PageKind kind) {
-  if (PageIsNew(page)) corrupted(index, block, "page never initialised");
-  const auto* header = reinterpret_cast<const PageHeaderData*>(page);
-  if (PageGetPageSize(page) != BLCKSZ || header->pd_lower < SizeOfPageHeaderData ||
-      header->pd_lower > header->pd_upper || header->pd_upper > header->pd_special ||
-      header->pd_special > BLCKSZ)
-    corrupted(index, block, "page header out of range");
-  if (PageGetSpecialSize(page) != MAXALIGN(sizeof(PageOpaque)))
-    corrupted(index, block, "page of another index type");
-  const auto* opaque = reinterpret_cast<const PageOpaque*>(PageGetSpecialPointer(page));
-  if (opaque->page_id != kPageId) corrupted(index, block, "page of another index type");
-  if (opaque->kind != kind) corrupted(index, block, "page of the wrong kind");
+  (void)page_facts(index, page, block, kind);
 }
 
 void check_link(Relation index, BlockNumber* blocks, BlockNumber first_list_page, BlockNumber link,
                 BlockNumber at) {
-  if (link < first_list_page) corrupted(index, at, "list link to a page that is not a list's");
-  if (link >= *blocks) *blocks = RelationGetNumberOfBlocks(index);
-  if (link >= *blocks) corrupted(index, at, "list link beyond the end of the index");
+  // Another backend may have added the page since the caller counted.
+  if (link >= *blocks && link >= first_list_page) *blocks = RelationGetNumberOfBlocks(index);
+  if (const char* wrong = arg::ivf::check_link(link, first_list_page, *blocks))
+    corrupted(index, at, wrong);
 }
-
-namespace {
-
-// An item of a checked page: in range, in use, its bytes between the header's upper and
-// special offsets, of a length in [min_size, max_size].
-const char* item_bytes(Relation index, Page page, BlockNumber block, OffsetNumber item,
-                       Size min_size, Size max_size, Size* size, const char* what) {
-  if (item < FirstOffsetNumber || item > PageGetMaxOffsetNumber(page))
-    corrupted(index, block, psprintf("%s out of range", what));
-  ItemId id = PageGetItemId(page, item);
-  const auto* header = reinterpret_cast<const PageHeaderData*>(page);
-  const Size offset = ItemIdGetOffset(id), length = ItemIdGetLength(id);
-  if (!ItemIdIsNormal(id) || length < min_size || length > max_size || offset < header->pd_upper ||
-      offset + length > header->pd_special)
-    corrupted(index, block, psprintf("%s of a wrong size or place", what));
-  *size = length;
-  return static_cast<const char*>(PageGetItem(page, id));
-}
-
-}  // namespace
 
 Buffer new_page(Relation index, ForkNumber fork, GenericXLogState* state, PageKind kind,
                 Page* page) {
@@ -110,31 +107,29 @@ Buffer new_page(Relation index, ForkNumber fork, GenericXLogState* state, PageKi
 CellHead read_cell_item(Relation index, BlockNumber* blocks, BlockNumber first_list_page, Page page,
                         BlockNumber block, OffsetNumber item, const char** centre,
                         Size* centre_size) {
-  Size size;
-  const char* data = item_bytes(index, page, block, item, sizeof(CellHead),
-                                sizeof(CellHead) + kMaxSketchBytes, &size, "cell item");
-  CellHead head;
-  std::memcpy(&head, data, sizeof head);
-  *centre = data + sizeof head;
-  *centre_size = size - sizeof head;
-  if ((head.first == InvalidBlockNumber) != (head.last == InvalidBlockNumber))
-    corrupted(index, block, "cell's list half linked");
-  if (head.first != InvalidBlockNumber) {
-    check_link(index, blocks, first_list_page, head.first, block);
-    check_link(index, blocks, first_list_page, head.last, block);
+  const std::string_view bytes = item_bytes(index, page, kCellPage, block, item, sizeof(CellHead),
+                                            sizeof(CellHead) + kMaxSketchBytes, "cell item");
+  arg::ivf::CellItem cell;
+  if (const char* wrong = arg::ivf::read_cell_item(bytes, &cell)) corrupted(index, block, wrong);
+  *centre = cell.centre.data();
+  *centre_size = cell.centre.size();
+  if (cell.first != InvalidBlockNumber) {
+    check_link(index, blocks, first_list_page, cell.first, block);
+    check_link(index, blocks, first_list_page, cell.last, block);
   }
-  return head;
+  return CellHead{cell.first, cell.last};
 }
 
 void read_entry(Relation index, Page page, BlockNumber block, OffsetNumber item,
                 ItemPointerData* tid, const char** sketch, Size* sketch_size) {
-  Size size;
-  const char* data = item_bytes(index, page, block, item, sizeof(EntryHead) + 1,
-                                sizeof(EntryHead) + kMaxSketchBytes, &size, "entry");
-  std::memcpy(tid, data, sizeof(EntryHead));
-  if (!ItemPointerIsValid(tid)) corrupted(index, block, "entry's row address invalid");
-  *sketch = data + sizeof(EntryHead);
-  *sketch_size = size - sizeof(EntryHead);
+  const std::string_view bytes =
+      item_bytes(index, page, kListPage, block, item, sizeof(EntryHead) + 1,
+                 sizeof(EntryHead) + kMaxSketchBytes, "entry");
+  arg::ivf::Entry entry;
+  if (const char* wrong = arg::ivf::read_entry(bytes, &entry)) corrupted(index, block, wrong);
+  ItemPointerSet(tid, entry.block, entry.offset);
+  *sketch = entry.sketch.data();
+  *sketch_size = entry.sketch.size();
 }
 
 namespace {

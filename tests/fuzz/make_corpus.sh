@@ -53,10 +53,13 @@ mkdir -p "$work/arg"
 # fuzz_arg_structure's seeds are a corpus minimised from fuzzing (committed as found, not made
 # here), and fuzz_sketch's the sketches of fuzz_arg_binary's ARG seeds as the server's
 # arg_sketch_send(arg_sketch(...)) wrote them (no tool here writes sketches: *.sketch in
-# version 1, as arg 0.2.0 wrote them, *.sketch_v2 the same with the version-2 digest), so only
-# the other targets' folders are made afresh.
+# version 1, as arg 0.2.0 wrote them, *.sketch_v2 the same with the version-2 digest), and
+# fuzz_ivf_page's three pages of an arg_ivf index the server wrote (30 scale-gen models, lists
+# = 4: the metapage, a cell page, a list page; byte 0 set to the kind, 0 to 2), so only the
+# other targets' folders are made afresh.
 mkdir -p "$corpus"
-find "$corpus" -mindepth 1 -maxdepth 1 ! -name fuzz_arg_structure ! -name fuzz_sketch -exec rm -rf {} +
+find "$corpus" -mindepth 1 -maxdepth 1 ! -name fuzz_arg_structure ! -name fuzz_sketch \
+  ! -name fuzz_ivf_page -exec rm -rf {} +
 for format in off ply stl obj; do
   mkdir -p "$corpus/fuzz_read_$format"
   for c in "${classes[@]}"; do

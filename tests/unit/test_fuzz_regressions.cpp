@@ -17,6 +17,7 @@
 #include "../fuzz/fuzz_build.cpp"
 #include "../fuzz/fuzz_build_options.cpp"
 #include "../fuzz/fuzz_decode_image.cpp"
+#include "../fuzz/fuzz_ivf_page.cpp"
 #include "../fuzz/fuzz_read_glb.cpp"
 #include "../fuzz/fuzz_read_obj.cpp"
 #include "../fuzz/fuzz_read_off.cpp"
@@ -44,6 +45,7 @@ const std::vector<Target>& targets() {
       {"fuzz_build", fuzz_build},
       {"fuzz_build_options", fuzz_build_options},
       {"fuzz_decode_image", fuzz_decode_image},
+      {"fuzz_ivf_page", fuzz_ivf_page},
       {"fuzz_read_glb", fuzz_read_glb},
       {"fuzz_read_obj", fuzz_read_obj},
       {"fuzz_read_off", fuzz_read_off},
