@@ -29,7 +29,9 @@ void add_query(RetrievalScores& out, const std::vector<int>& ranked, const std::
   }
   double ideal = 1.0;
   for (int k = 2; k <= relevant; ++k) ideal += 1.0 / std::log2(double(k));
-  out.nn += !ranked.empty() && hit[std::size_t(ranked[0])] ? 1.0 : 0.0;
+  const double nn = !ranked.empty() && hit[std::size_t(ranked[0])] ? 1.0 : 0.0;
+  out.nn += nn;
+  out.nn_per_class[std::size_t(c)] += nn;
   const double ft = double(in_first) / relevant;
   out.ft += ft;
   out.ft_per_class[std::size_t(c)] += ft;
@@ -49,13 +51,16 @@ void add_query(RetrievalScores& out, const std::vector<int>& ranked, const std::
   }
 }
 
-void finish(RetrievalScores& out, int counted, const std::vector<int>& queries_per_class) {
+void finish(RetrievalScores& out, int counted) {
   if (counted > 0) {
     for (double* x : {&out.nn, &out.ft, &out.st, &out.e, &out.dcg, &out.map}) *x /= counted;
     for (double& p : out.precision_at_recall) p /= counted;
   }
   for (std::size_t c = 0; c < out.ft_per_class.size(); ++c)
-    if (queries_per_class[c] > 0) out.ft_per_class[c] /= queries_per_class[c];
+    if (const int q = out.queries_per_class[c]; q > 0) {
+      out.ft_per_class[c] /= q;
+      out.nn_per_class[c] /= q;
+    }
 }
 
 // Ranks the models of one distance row by (distance, index), invalid models last.
@@ -88,7 +93,8 @@ RetrievalScores score_rows(const std::vector<double>& distance, const std::vecto
   RetrievalScores out;
   out.precision_at_recall.assign(kRecallPoints, 0.0);
   out.ft_per_class.assign(std::size_t(classes), 0.0);
-  std::vector<int> queries_per_class(std::size_t(classes), 0);
+  out.nn_per_class.assign(std::size_t(classes), 0.0);
+  out.queries_per_class.assign(std::size_t(classes), 0);
   std::vector<int> order;
   int counted = 0;
   for (int q = 0; q < q_count; ++q) {
@@ -98,14 +104,14 @@ RetrievalScores score_rows(const std::vector<double>& distance, const std::vecto
         c >= 0 && c < classes ? class_size[std::size_t(c)] - (self >= 0 ? 1 : 0) : 0;
     if (relevant <= 0) continue;  // a class of one has nothing to find
     ++counted;
-    ++queries_per_class[std::size_t(c)];
+    ++out.queries_per_class[std::size_t(c)];
     if (!query_valid[std::size_t(q)]) continue;
     rank_row(distance.data() + std::size_t(q) * std::size_t(n), n, self, valid, order);
     std::vector<char> hit(static_cast<std::size_t>(n));
     for (int j = 0; j < n; ++j) hit[std::size_t(j)] = label[std::size_t(j)] == c && j != self;
     add_query(out, order, hit, relevant, c);
   }
-  finish(out, counted, queries_per_class);
+  finish(out, counted);
   return out;
 }
 

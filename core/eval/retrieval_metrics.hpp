@@ -11,7 +11,11 @@ inline constexpr int kRecallPoints = 20;  // precision-recall curve at recall 0.
 struct RetrievalScores {
   double nn = 0, ft = 0, st = 0, e = 0, dcg = 0, map = 0;  // means over queries, in [0, 1]
   std::vector<double> precision_at_recall;  // kRecallPoints values (interpolated precision)
-  std::vector<double> ft_per_class;         // mean first tier of the queries of each class
+  // Per class, so that a change which helps one kind of shape and hurts another shows: the mean
+  // first tier and nearest neighbour of the class's queries, and how many queries that mean is
+  // over (0 for a class of one, which has nothing to find: its means stay 0).
+  std::vector<double> ft_per_class, nn_per_class;
+  std::vector<int> queries_per_class;
 };
 
 // `distance` is row-major n x n (row = query); smaller is closer. `label` gives each model's
