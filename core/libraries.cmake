@@ -53,8 +53,8 @@ set(ARG_RENDER_SOURCES
 set(ARG_EVAL_SOURCES
     eval/baseline_descriptors.cpp eval/distance_matrix_file.cpp eval/label_file.cpp
     eval/perturbations.cpp eval/pr_plot.cpp eval/quadric_decimation.cpp eval/refine_faces.cpp
-    eval/retrieval_metrics.cpp eval/term_matrices.cpp eval/value_jitter.cpp
-    eval/weight_search.cpp)
+    eval/retrieval_metrics.cpp eval/set_weights_file.cpp eval/term_matrices.cpp
+    eval/value_jitter.cpp eval/weight_search.cpp)
 # The plug-ins' sources, listed with their targets in CMakeLists.txt.
 set(ARG_PLUGIN_SOURCES oiio/oiio_decode_image.cpp oiio/write_png.cpp oiio/register_decoder.cpp
                        vdb/vdb_distance_field.cpp vdb/register_distance_field.cpp)

@@ -11,6 +11,7 @@
 #include "common/parallel_for.hpp"
 #include "eval/label_file.hpp"
 #include "eval/retrieval_metrics.hpp"
+#include "eval/set_weights_file.hpp"
 #include "eval/term_matrices.hpp"
 #include "eval/weight_search.hpp"
 #include "eval_models.hpp"
@@ -24,7 +25,7 @@ namespace {
 
 struct TuneArgs {
   std::vector<std::string> labels;
-  std::string root, cache, start = "arg", objective = "map";
+  std::string root, cache, start = "arg", objective = "map", fold_weights;
   int folds = 2, rounds = 3;
   bool mixing_only = false, proxy_copies = false;
   int threads = int(std::max(1u, std::thread::hardware_concurrency()));
@@ -152,12 +153,17 @@ const bool registered = argtool::register_command(
                    "graph_on_proxy is learnt from proxies of the training shapes");
       app.add_option("--threads", a->threads, "worker threads")->check(CLI::Range(1, 256));
       app.add_option("--cache", a->cache, "folder caching built ARGs between runs");
+      app.add_option("--fold-weights", a->fold_weights,
+                     "write the weights each leave-one-set-out fold learnt, a line per held-out "
+                     "set (what eval --weights-per-set reads)");
       argtool::add_build_flags(app, a->options, false);
       return [a] {
         if (!a->root.empty() && a->labels.size() > 1)
           throw std::runtime_error("--root applies to one labels file only");
         if (a->proxy_copies && a->labels.size() < 2)
           throw std::runtime_error("--proxy-copies needs several --labels sets (leave one out)");
+        if (!a->fold_weights.empty() && a->labels.size() < 2)
+          throw std::runtime_error("--fold-weights needs several --labels sets (leave one out)");
         if (!a->cache.empty()) fs::create_directories(a->cache);
         const std::size_t given = a->labels.size();
         std::vector<Set> sets(a->proxy_copies ? 2 * given : given);
@@ -220,6 +226,7 @@ const bool registered = argtool::register_command(
         } else {
           // Leave one set out: learn on the others and their proxy copies (each weighs the
           // same), score on it.
+          std::vector<arg::SetWeights> folds;
           for (std::size_t out = 0; out < given; ++out) {
             std::fprintf(stderr, "held out: %s\n", sets[out].name.c_str());
             std::vector<std::size_t> train;
@@ -237,10 +244,14 @@ const bool registered = argtool::register_command(
             report.push_back(row("held out, learnt weights", sets[out].name, held));
             report.push_back(row("held out, start weights", sets[out].name, base));
             report.push_back("  learnt on the other sets: " + arg::format_weights(learnt));
+            folds.push_back({sets[out].name, arg::format_weights(learnt)});
             std::printf("%s\n%s\n%s\n", report[report.size() - 3].c_str(),
                         report[report.size() - 2].c_str(), report.back().c_str());
             std::fflush(stdout);
           }
+          // Written as soon as the folds are done: the final search on everything is not needed.
+          if (!a->fold_weights.empty())
+            argtool::write_file_bytes(a->fold_weights, arg::format_set_weights(folds));
         }
         std::fprintf(stderr, "final: training on every model of every set\n");
         const arg::Weights final_weights = search([&](const arg::Weights& w) {
