@@ -102,4 +102,40 @@ awk -F'\t' '$2 == "M1" { print $1 }' "$work/rows.copy" | sort > "$work/m1.txt"
 check "a filter keeps only its museum's rows" bash -c "awk -F'\t' '\$1 == \"m1\" {
   gsub(/[{}]/, \"\", \$3); n = split(\$3, ids, \",\"); for (i = 1; i <= n; ++i) print ids[i] }' \
   '$work/truth.tsv' | sort -u | comm -23 - '$work/m1.txt' | grep -q . && exit 1 || exit 0"
+
+# 7. eval --per-class: held out beside training and peers, and the JSON reads back to the table.
+"$argtool" gen --out "$work/pc" --per-class 2 --class cup --class torus --labels > /dev/null 2>&1
+mkdir -p "$work/peers/pc"
+"$argtool" eval --labels "$work/pc/labels.csv" --method d2 --json "$work/d2.json" \
+  --matrix "$work/peers/pc/d2-test.dist.txt" > /dev/null 2>&1
+gzip "$work/peers/pc/d2-test.dist.txt"
+# A peer by hand, spaced loosely: cup_01's nearest is a torus, the others find their own class.
+printf '0 1  5 5\n5\t0 1 5\n5 5 0 1 \n5 5 1 0\n\n' | gzip > "$work/peers/pc/hand.dist.txt.gz"
+printf '# a fold for the generated set\npc arg panorama=1\n' > "$work/folds.txt"
+"$argtool" eval --labels "$work/pc/labels.csv" --per-class --weights-per-set "$work/folds.txt" \
+  --peers "$work/peers" --json "$work/pc.json" > "$work/pc.txt" 2> /dev/null
+check "a per-class table: a row per class and all, with the peers' FT" \
+  awk '/^per class: pc/ { on = 1; next } on && /D2 FT +HAND FT$/ { head = 1 }
+    on && ($1 == "cup" || $1 == "torus" || $1 == "all") && NF == 8 { rows++ }
+    END { exit !(head && rows == 3) }' "$work/pc.txt"
+check "the hand-made peer's FT per class: cup .5, torus 1, all .75" \
+  awk '$1 == "cup" && $8 == "0.500" { n++ } $1 == "torus" && $8 == "1.000" { n++ }
+    $1 == "all" && $8 == "0.750" { n++ } END { exit n != 3 }' "$work/pc.txt"
+check "the per-class JSON holds the table's numbers" python3 - "$work/pc.txt" \
+  "$work/pc.per_class.json" "$work/d2.json" << 'PY'
+import json, sys
+rows = {}
+for line in open(sys.argv[1]).read().split("per class: ", 1)[1].splitlines()[2:]:
+    rows[line.split()[0]] = line.split()[1:]
+t = json.load(open(sys.argv[2]))
+f = lambda s, k: "-" if s is None else f"{s[k]:.3f}"
+for c in t["classes"] + [dict(t["all"], **{"class": "all"})]:
+    want = [str(c["size"]), f(c["held_out"], "nn"), f(c["held_out"], "ft"),
+            f(c["training"], "nn"), f(c["training"], "ft"), f(c["peers"]["d2-test"], "ft"),
+            f(c["peers"]["hand"], "ft")]
+    assert rows[c["class"]] == want, (c["class"], rows[c["class"]], want)
+# The peer is scored as eval scores a method: its overall FT is eval's.
+assert abs(t["all"]["peers"]["d2-test"]["ft"] - json.load(open(sys.argv[3]))["ft"]) < 1e-12
+assert t["held_out_weights"] and t["held_out_weights"] != t["training_weights"]
+PY
 echo "1..$n"

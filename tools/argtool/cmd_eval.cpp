@@ -14,10 +14,13 @@
 #include "eval/label_file.hpp"
 #include "eval/pr_plot.hpp"
 #include "eval/retrieval_metrics.hpp"
+#include "eval/set_weights_file.hpp"
 #include "eval_models.hpp"
 #include "load_arg.hpp"
 #include "match/match_prep.hpp"
 #include "match/similarity.hpp"
+#include "peer_matrices.hpp"
+#include "per_class_table.hpp"
 #include "progress_bar.hpp"
 
 namespace fs = std::filesystem;
@@ -26,8 +29,9 @@ namespace {
 
 struct EvalArgs {
   std::vector<std::string> labels, queries;
-  std::string root, weights, cache, json, plot, matrix;
+  std::string root, weights, cache, json, plot, matrix, weights_per_set, peers;
   std::vector<std::string> methods;
+  bool per_class = false;
   int threads = int(std::max(1u, std::thread::hardware_concurrency()));
   arg::BuildOptions options;
 };
@@ -212,6 +216,37 @@ std::vector<Model> prepare_models(const arg::LabelSet& set, const fs::path& root
   return models;
 }
 
+// One set's per-class columns: arg under the training weights (`training`, already scored),
+// under its fold's weights when `folds` has them, and each peer under the same scorer.
+argtool::PerClassColumns per_class_columns(const std::string& name, const arg::LabelSet& set,
+                                           const std::vector<Model>& models,
+                                           const arg::RetrievalScores& training,
+                                           const std::vector<arg::SetWeights>& folds,
+                                           const EvalArgs& a) {
+  argtool::PerClassColumns columns{name, &set, training, {}, {}, {}, {}, {}};
+  columns.training_label = a.weights.empty()
+                               ? "the shipped weights, learnt on every set: a training score"
+                               : "--weights " + a.weights;
+  columns.training_weights =
+      arg::format_weights(arg::parse_weights(a.weights.empty() ? "arg" : a.weights));
+  const auto fold = std::find_if(folds.begin(), folds.end(),
+                                 [&](const arg::SetWeights& f) { return f.set == name; });
+  if (!folds.empty() && fold == folds.end())
+    throw std::runtime_error(a.weights_per_set + " has no weights for set " + name);
+  if (fold != folds.end()) {
+    EvalArgs held = a;
+    held.weights = fold->weights;
+    columns.held_out = run_method("arg", models, set, held).scores;
+    columns.held_out_weights = arg::format_weights(arg::parse_weights(fold->weights));
+  }
+  if (!a.peers.empty())
+    for (auto& peer : argtool::read_peer_matrices(a.peers, name, models.size()))
+      columns.peers.emplace_back(peer.method,
+                                 arg::retrieval_scores(peer.matrix.distance, set.class_of,
+                                                       int(set.classes.size()), peer.matrix.valid));
+  return columns;
+}
+
 const bool registered = argtool::register_command(
     "eval",
     "retrieval quality on labelled sets (on each, every model queries all the others); one "
@@ -244,9 +279,31 @@ const bool registered = argtool::register_command(
       app.add_option("--matrix", a->matrix,
                      "write the distance matrix: a line per model in label order, failed models "
                      "inf (several sets or methods: FILE.SET.METHOD.txt)");
+      app.add_flag("--per-class", a->per_class,
+                   "also a table per set of each class's NN and FT under the arg method: held "
+                   "out (the set's --weights-per-set weights) beside training (--weights, "
+                   "default the shipped weights, learnt on every set); with --json, the same "
+                   "numbers in OUT.per_class.json");
+      app.add_option("--weights-per-set", a->weights_per_set,
+                     "the held-out weights of --per-class: a line per set, 'SET WEIGHTS', as "
+                     "`argtool tune --fold-weights FILE` writes them (each learnt on the other "
+                     "sets; read from tune's file rather than searched here, since the folds "
+                     "rebuild every set on proxies); without it the held-out columns show -")
+          ->check(CLI::ExistingFile);
+      app.add_option("--peers", a->peers,
+                     "folder of the peers' matrices for --per-class, DIR/SET/METHOD.dist.txt.gz "
+                     "(../shared/peers): each peer's FT per class beside arg's");
       argtool::add_build_flags(app, a->options, false);
       return [a] {
         if (a->methods.empty()) a->methods = {"arg"};
+        if (a->per_class &&
+            std::find(a->methods.begin(), a->methods.end(), "arg") == a->methods.end())
+          throw std::runtime_error("--per-class reports the arg method: add --method arg");
+        if (!a->per_class && (!a->weights_per_set.empty() || !a->peers.empty()))
+          throw std::runtime_error("--weights-per-set and --peers go with --per-class");
+        std::vector<arg::SetWeights> folds;
+        if (!a->weights_per_set.empty())
+          folds = arg::parse_set_weights(argtool::read_file_bytes(a->weights_per_set));
         if (!a->root.empty() && a->labels.size() > 1)
           throw std::runtime_error("--root applies to one labels file only");
         if (!a->queries.empty() && a->labels.size() != 1)
@@ -261,7 +318,8 @@ const bool registered = argtool::register_command(
             descriptors.push_back(m);
         nlohmann::json out = nlohmann::json::array(), curves = nlohmann::json::array();
         std::vector<arg::PrCurve> plot;
-        std::vector<std::string> table;
+        std::vector<std::string> table, per_class_tables;
+        nlohmann::json per_class = nlohmann::json::array();
         char line[256];
         std::snprintf(line, sizeof line, "%-10s %-7s %6s %6s %6s %6s %6s %6s %6s %6s %9s %9s %8s",
                       "set", "method", "models", "failed", "NN", "FT", "ST", "E", "DCG", "mAP",
@@ -282,6 +340,12 @@ const bool registered = argtool::register_command(
           for (const std::string& method : a->methods) {
             MethodResult r = run_method(method, models, set, *a);
             const auto& s = r.scores;
+            if (a->per_class && method == "arg") {
+              const argtool::PerClassColumns columns =
+                  per_class_columns(name, set, models, s, folds, *a);
+              per_class_tables.push_back(argtool::per_class_text(columns));
+              per_class.push_back(argtool::per_class_json(columns));
+            }
             const double seconds = r.seconds + prepare_s;
             std::snprintf(line, sizeof line,
                           "%-10s %-7s %6zu %6zu %6.3f %6.3f %6.3f %6.3f %6.3f %6.3f %9.2f %9.2f "
@@ -346,11 +410,16 @@ const bool registered = argtool::register_command(
           }
         }
         for (const std::string& row : table) std::printf("%s\n", row.c_str());
+        for (const std::string& t : per_class_tables) std::printf("\n%s", t.c_str());
         if (!a->json.empty()) {
           argtool::write_file_bytes(a->json, (out.size() == 1 ? out[0] : out).dump(2) + "\n");
           fs::path side = fs::path(a->json).replace_extension(".curves.json");
           argtool::write_file_bytes(side.string(),
                                     (curves.size() == 1 ? curves[0] : curves).dump(2) + "\n");
+          if (a->per_class)
+            argtool::write_file_bytes(
+                fs::path(a->json).replace_extension(".per_class.json").string(),
+                (per_class.size() == 1 ? per_class[0] : per_class).dump(2) + "\n");
         }
         if (!a->plot.empty())
           argtool::write_file_bytes(
