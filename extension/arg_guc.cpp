@@ -26,7 +26,7 @@ int max_texture_pixels = int(kDefaults.max_image_pixels);
 int build_threads = 1;
 bool query_cache = true;
 int ivf_probes_setting = 4;
-int ivf_candidates_setting = 25;
+int ivf_candidates_setting = 0;
 int iterative_scan_setting = int(IterativeScan::StrictOrder);
 int max_scan_tuples_setting = 20000;
 
@@ -76,8 +76,9 @@ void define_gucs() {
       "arg.ivf_candidates",
       "Nearest candidates by sketch that a search of an arg_ivf index of arg values ranks by "
       "SIM at a time.",
-      "More candidates find more of the exact nearest and take longer (one SIM each).",
-      &ivf_candidates_setting, ivf_candidates_setting, 1, 100000, PGC_USERSET, 0, nullptr, nullptr,
+      "More candidates find more of the exact nearest and take longer (one SIM each); 0 "
+      "chooses by the index's size (25 up to about 300,000 rows, 25 more a decade beyond).",
+      &ivf_candidates_setting, ivf_candidates_setting, 0, 100000, PGC_USERSET, 0, nullptr, nullptr,
       nullptr);
   DefineCustomEnumVariable(
       "arg.iterative_scan",
@@ -117,8 +118,9 @@ int ivf_probes() {
   return ivf_probes_setting;
 }
 
-int ivf_candidates() {
-  return ivf_candidates_setting;
+int ivf_candidates(double index_rows) {
+  return ivf_candidates_setting > 0 ? ivf_candidates_setting
+                                    : int(arg::default_candidates(index_rows));
 }
 
 IterativeScan iterative_scan() {

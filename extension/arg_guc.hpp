@@ -24,8 +24,9 @@ bool query_cache_enabled();
 int ivf_probes();
 
 // arg.ivf_candidates: how many of an arg_ivf index's nearest candidates by sketch a search of
-// `arg` values ranks by SIM at a time.
-int ivf_candidates();
+// `arg` values ranks by SIM at a time, for an index of `index_rows` rows (the setting's 0
+// leaves it to the index's size: search/sketch_cells.hpp default_candidates).
+int ivf_candidates(double index_rows);
 
 // arg.iterative_scan: whether a search of an arg_ivf index of `arg` values goes on past its
 // first batch of candidates when the executor asks for more rows (a filter rejected them), and

@@ -95,7 +95,8 @@ void cost_estimate(PlannerInfo* root, IndexPath* path, double loop_count, Cost* 
   const bool ranks =
       path->indexinfo->opcintype[0] != InvalidOid && is_arg_type(path->indexinfo->opcintype[0]);
   const double rank = 2000 * cpu_operator_cost + random_page_cost;
-  if (ranks) *startup += std::min(double(argpg::ivf_candidates()), entries) * rank;
+  if (ranks)
+    *startup += std::min(double(argpg::ivf_candidates(path->indexinfo->tuples)), entries) * rank;
   // Past its first candidates an iterative search ranks one more candidate for each further row
   // it returns, so its whole run costs a SIM a table row: under LIMIT k and a filter that keeps
   // a share s of the rows the planner charges k/s SIMs, which is what the scan does, and a

@@ -75,8 +75,9 @@ struct ScanState {
   double margin, margin_late;
   Size returned;  // rows returned by this search
   int batches;
-  Size reranked;  // rows ranked by SIM in this scan (arg.max_scan_tuples bounds it)
-  double last;    // the SIM of the last row returned (strict order drops rows below it)
+  Size reranked;    // rows ranked by SIM in this scan (arg.max_scan_tuples bounds it)
+  Size candidates;  // arg.ivf_candidates for this index's size
+  double last;      // the SIM of the last row returned (strict order drops rows below it)
   arg::ShapeSketch* query;
   arg::ShapeSketch* row;
   arg::QueryRanker* ranker;  // C++ state, deleted by `on_reset` with `memory`
@@ -278,6 +279,7 @@ void start(IndexScanDesc scan, ScanState& s) {
   // (a lock, a detoast) may run before its last use below.
   const Cells cells = read_cells(index, !s.unordered);
   s.cells = cells.count;
+  s.candidates = Size(argpg::ivf_candidates(double(index->rd_rel->reltuples)));
   s.probed = 0;
   s.cell_order = static_cast<uint32*>(MemoryContextAlloc(s.memory, sizeof(uint32) * s.cells));
   if (s.unordered || !cells.refs[0].has_centre) {
@@ -323,7 +325,7 @@ bool rank_batch(IndexScanDesc scan, ScanState& s, argpg::IterativeScan mode) {
   if (s.batches > 0 &&
       (mode == argpg::IterativeScan::Off || s.reranked >= Size(argpg::max_scan_tuples())))
     return false;
-  const Size want = Size(argpg::ivf_candidates());
+  const Size want = s.candidates;
   // Once a batch's worth of rows has been returned and more are wanted (a filter rejects most
   // of them), each batch reads further cells too: the nearest rows of cells farther out come
   // sooner than the far rows of the cells read first. A plain LIMIT k search never gets here.
@@ -391,7 +393,7 @@ bool next_ranked(IndexScanDesc scan, ScanState& s, Hit& out) {
       const Hit& nearest = s.pool[0];
       // The nearest candidate not yet ranked is the refined heap's root (an entry not yet
       // read whole is taken to lie no nearer than those read).
-      const double margin = s.returned < Size(argpg::ivf_candidates()) ? s.margin : s.margin_late;
+      const double margin = s.returned < s.candidates ? s.margin : s.margin_late;
       const bool settled =
           !more || mode == argpg::IterativeScan::RelaxedOrder ||
           (s.refined_count > 0 && nearest.distance <= s.refined[0].distance + margin);

@@ -194,7 +194,7 @@ CREATE INDEX ON objects USING arg_ivf (arg_build(arg_generate_model(class, id, 1
 CREATE INDEX ON objects USING arg_ivf (descr, id);
 SELECT * FROM arg_index_check('objects_pkey');
 SELECT * FROM arg_index_check('objects');
-SET arg.ivf_candidates = 0;
+SET arg.ivf_candidates = -1;
 SET arg.iterative_scan = sideways;
 SET arg.max_scan_tuples = 0;
 

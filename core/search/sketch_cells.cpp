@@ -3,6 +3,7 @@
 #include "search/sketch_cells.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <utility>
 
@@ -43,6 +44,11 @@ std::vector<std::size_t> choose_cell_centres(const ShapeSketch* sample, std::siz
     }
   }
   return centres;
+}
+
+std::size_t default_candidates(double rows) {
+  const double decades = rows > 1 ? std::log10(rows) - 4 : 0;
+  return 25 * std::size_t(std::max(1.0, std::floor(decades + 0.5)));
 }
 
 std::vector<CoarseQuery> coarse_centres(const ShapeSketch* centres, std::size_t count) {

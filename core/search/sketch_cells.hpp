@@ -40,6 +40,14 @@ std::vector<CoarseQuery> coarse_centres(const ShapeSketch* centres, std::size_t 
 std::size_t nearest_cell(const ShapeSketch& sketch, const ShapeSketch* centres, std::size_t count,
                          const CoarseQuery* coarse = nullptr);
 
+// How many candidates a search ranks by SIM when the setting leaves it to the index's size
+// (arg.ivf_candidates = 0): 25 a decade of rows past 10,000, at least 25 (rounded at half
+// decades: 25 up to about 300,000 rows, 50 up to 3 million, 75 beyond). More rows put more
+// near neighbours within the sketch's error of each other: of jittered copies, 25 candidates
+// found 1.000 of SIM's ten nearest at 100,000 rows but .967 at a million, where 50 find .993
+// (docs/BENCHMARKS.md "A million rows").
+std::size_t default_candidates(double rows);
+
 // The `probes` cells nearest to `query` (all `count` of them when probes >= count), nearest
 // first, ties by index: the cells a search reads. With `coarse`, the cells are ranked by the
 // coarse distance and the first kCellsRefined of them by the sketch distance (the ones a

@@ -108,6 +108,17 @@ TEST(SketchCells, ManyCentresRankedCoarselyFirstKeepTheNearest) {
   }
 }
 
+TEST(SketchCells, CandidatesGrowADecadeAtATime) {
+  EXPECT_EQ(default_candidates(-1), 25u);  // a size never measured
+  EXPECT_EQ(default_candidates(0), 25u);
+  EXPECT_EQ(default_candidates(1000), 25u);
+  EXPECT_EQ(default_candidates(100000), 25u);
+  EXPECT_EQ(default_candidates(300000), 25u);
+  EXPECT_EQ(default_candidates(400000), 50u);
+  EXPECT_EQ(default_candidates(1000000), 50u);
+  EXPECT_EQ(default_candidates(10000000), 75u);
+}
+
 TEST(SketchCells, SeedingStopsWhenAsked) {
   int polls = 0;
   EXPECT_THROW(
