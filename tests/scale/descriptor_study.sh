@@ -8,12 +8,15 @@
 #       leave-one-set-out choice of the descriptor's block scales (descriptor_tuning.cpp)
 #   tests/scale/descriptor_study.sh --ivf SET [QUERIES]
 #       recall@10 of an arg_ivf search by cells and probes (ivf_study.cpp)
+#   tests/scale/descriptor_study.sh --hnsw ROWS.copy N QUERIES.copy [POOL]
+#       the inverted file against a navigable graph, recall by distances computed (hnsw_study.cpp)
 # SET is a COPY file from `argtool scale-gen`, or a labelled set's labels.csv (model_id,path,
 # class), built once into $BUILD_DIR/scale/NAME.copy (cached ARGs in $BUILD_DIR/arg-cache).
 set -euo pipefail
 shopt -s inherit_errexit  # a failed compile or build inside $(...) stops the script
 usage() {
   echo "usage: $0 SET [MAX_MODELS [QUERIES]] | $0 --tune SET SET [SET ...] | $0 --ivf SET [QUERIES]" >&2
+  echo "       $0 --hnsw ROWS.copy N QUERIES.copy [POOL]" >&2
   exit 2
 }
 [[ $# -ge 1 ]] || usage
@@ -68,6 +71,11 @@ elif [[ "$1" == --ivf ]]; then
   file=$(copy_of "$2")
   shift 2
   "$exe" "$file" "$@"
+elif [[ "$1" == --hnsw ]]; then
+  [[ $# -ge 4 ]] || usage
+  exe=$(compile hnsw_study)
+  shift
+  "$exe" "$@"
 else
   exe=$(compile descriptor_study)
   file=$(copy_of "$1")
