@@ -19,6 +19,9 @@ std::vector<float> d2(const Mesh& m) {
 std::vector<float> cords(const Mesh& m) {
   return cords_histogram(m, 64);
 }
+std::vector<float> panorama(const Mesh& m) {
+  return panorama_descriptor(m);
+}
 std::vector<float> depth(const Mesh& m) {
   return depth_buffer_descriptor(depth_images(m, 64), 8);
 }
@@ -35,7 +38,7 @@ const std::vector<DescriptorMethod>& descriptor_methods() {
        l1_distance},
       {"panorama",
        "Papadakis et al.: Fourier magnitudes of cylindrical views about the axes of two frames",
-       panorama_descriptor, panorama_distance},
+       panorama, panorama_distance},
   };
   return methods;
 }

@@ -6,13 +6,15 @@
 
 namespace arg {
 
-TriangleCurvature triangle_curvature(const Mesh& mesh, const MeshEdges& E) {
+TriangleCurvature triangle_curvature(const Mesh& mesh, const MeshEdges& E,
+                                     const StopRequested& stop) {
   const int nv = int(mesh.V.rows()), m = int(mesh.F.rows());
   std::vector<Eigen::Vector3d> normal(static_cast<std::size_t>(m));
   std::vector<double> varea(static_cast<std::size_t>(nv), 0.0),
       angle_sum(static_cast<std::size_t>(nv), 0.0), dihedral(static_cast<std::size_t>(nv), 0.0);
   std::vector<char> on_boundary(std::size_t(nv), 0);
   for (int f = 0; f < m; ++f) {
+    poll_interrupt(std::size_t(f), stop);
     Eigen::Vector3d p[3];
     for (int c = 0; c < 3; ++c) p[c] = mesh.V.row(mesh.F(f, c)).transpose();
     Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]);
@@ -26,6 +28,7 @@ TriangleCurvature triangle_curvature(const Mesh& mesh, const MeshEdges& E) {
     }
   }
   for (int e = 0; e < E.count(); ++e) {
+    poll_interrupt(std::size_t(e), stop);
     if (E.faces(e) != 2) {
       on_boundary[E.v0[e]] = on_boundary[E.v1[e]] = 1;
       continue;
@@ -42,6 +45,7 @@ TriangleCurvature triangle_curvature(const Mesh& mesh, const MeshEdges& E) {
   }
   std::vector<double> H(static_cast<std::size_t>(nv)), K(static_cast<std::size_t>(nv));
   for (int v = 0; v < nv; ++v) {
+    poll_interrupt(std::size_t(v), stop);
     double A = varea[v];
     H[v] = A > 0 ? dihedral[v] / (4.0 * A) : 0.0;
     K[v] = A > 0 ? ((on_boundary[v] ? M_PI : 2.0 * M_PI) - angle_sum[v]) / A : 0.0;
@@ -50,6 +54,7 @@ TriangleCurvature triangle_curvature(const Mesh& mesh, const MeshEdges& E) {
   out.mean.resize(std::size_t(m));
   out.gaussian.resize(std::size_t(m));
   for (int f = 0; f < m; ++f) {
+    poll_interrupt(std::size_t(f), stop);
     out.mean[f] = (H[mesh.F(f, 0)] + H[mesh.F(f, 1)] + H[mesh.F(f, 2)]) / 3.0;
     out.gaussian[f] = (K[mesh.F(f, 0)] + K[mesh.F(f, 1)] + K[mesh.F(f, 2)]) / 3.0;
   }

@@ -17,6 +17,7 @@ struct TriangleCurvature {
 // edge length, over the vertex's barycentric area (a third of the faces around it):
 // H = sum |e| beta_e / (4 A). Gaussian curvature: angle defect over the same area
 // (2 pi - sum of angles, or pi - sum on the boundary). Convex = positive.
-TriangleCurvature triangle_curvature(const Mesh& mesh, const MeshEdges& edges);
+TriangleCurvature triangle_curvature(const Mesh& mesh, const MeshEdges& edges,
+                                     const StopRequested& stop = {});
 
 }  // namespace arg

@@ -67,12 +67,13 @@ Mesh largest_component(const Mesh& mesh) {
 
 std::vector<float> laplace_spectrum(const Mesh& input, int count, const StopRequested& stop) {
   Mesh mesh = largest_component(input);
+  check_interrupt(stop);
   if (mesh.V.rows() > 2500) {
     // Collapsing the edges shorter than those of an equilateral mesh of 10,000 triangles of
     // the same area leaves about 2000 vertices (measured on SHREC 2007 and SHREC 2011).
     CollapseOptions coarse;
     coarse.min_length = std::sqrt(4.0 * surface_area(mesh) / (std::sqrt(3.0) * 2.0 * 5000.0));
-    mesh = collapse_short_edges(mesh, coarse);
+    mesh = collapse_short_edges(mesh, coarse, stop);
   }
   check_interrupt(stop);
   const int n = int(mesh.V.rows());

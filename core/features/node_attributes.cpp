@@ -32,7 +32,8 @@ struct Accumulator {
 
 // Finest level: pieces into nodes, then close each node with its caps to get its volume.
 std::vector<Accumulator> finest_accumulators(const Mesh& mesh, const SlicedSurface& s,
-                                             const ReebGraph& reeb, const TriangleCurvature& curv) {
+                                             const ReebGraph& reeb, const TriangleCurvature& curv,
+                                             const StopRequested& stop) {
   const std::size_t nodes = reeb.levels.back().interval.size();
   std::vector<Accumulator> acc(nodes);
   // One cap per contact between a node and a node of the next interval: the cut segments of
@@ -44,6 +45,7 @@ std::vector<Accumulator> finest_accumulators(const Mesh& mesh, const SlicedSurfa
   std::vector<Cut> cuts;
   const bool colour = mesh.has_colour();
   for (std::size_t p = 0; p < s.pieces.size(); ++p) {
+    poll_interrupt(p, stop);
     const Piece& piece = s.pieces[p];
     const int n = reeb.piece_node[p];
     Accumulator& a = acc[std::size_t(n)];
@@ -103,10 +105,10 @@ float unit(double x) {
 std::vector<std::vector<ArgNode>> node_attributes(const Mesh& mesh, const SlicedSurface& s,
                                                   const ReebGraph& reeb,
                                                   const TriangleCurvature& curvature,
-                                                  double* volume_out) {
+                                                  double* volume_out, const StopRequested& stop) {
   const int levels = int(reeb.levels.size()) - 1;
   std::vector<std::vector<Accumulator>> acc(reeb.levels.size());
-  acc[std::size_t(levels)] = finest_accumulators(mesh, s, reeb, curvature);
+  acc[std::size_t(levels)] = finest_accumulators(mesh, s, reeb, curvature, stop);
   for (int r = levels - 1; r >= 0; --r) {
     acc[std::size_t(r)].resize(reeb.levels[std::size_t(r)].interval.size());
     const ReebLevel& child = reeb.levels[std::size_t(r) + 1];
@@ -121,6 +123,7 @@ std::vector<std::vector<ArgNode>> node_attributes(const Mesh& mesh, const Sliced
     if (r < levels)
       for (int& n : node_of) n = reeb.levels[std::size_t(r) + 1].parent[std::size_t(n)];
     for (std::size_t p = 0; p < s.pieces.size(); ++p) {
+      poll_interrupt(p, stop);
       Accumulator& a = acc[std::size_t(r)][std::size_t(node_of[p])];
       Eigen::Vector3d centre =
           a.area > 0 ? Eigen::Vector3d(a.moment / a.area) : Eigen::Vector3d::Zero();

@@ -20,6 +20,7 @@ namespace arg {
 std::vector<std::vector<ArgNode>> node_attributes(const Mesh& mesh, const SlicedSurface& sliced,
                                                   const ReebGraph& reeb,
                                                   const TriangleCurvature& curvature,
-                                                  double* volume = nullptr);
+                                                  double* volume = nullptr,
+                                                  const StopRequested& stop = {});
 
 }  // namespace arg

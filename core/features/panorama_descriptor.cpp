@@ -98,11 +98,12 @@ std::vector<float> panorama_wavelet_features(const PanoramicViews& views, int le
   return out;
 }
 
-std::vector<float> panorama_descriptor(const Mesh& posed) {
+std::vector<float> panorama_descriptor(const Mesh& posed, const StopRequested& stop) {
   std::vector<float> out;
-  const Mesh turned = apply_pose(posed, normal_pose(posed));
+  const Mesh turned = apply_pose(posed, normal_pose(posed, stop));
+  check_interrupt(stop);
   for (const Mesh* frame : {&posed, &turned}) {
-    const PanoramicViews views = panoramic_views(*frame, kPanoramaHeight, kPanoramaRadius);
+    const PanoramicViews views = panoramic_views(*frame, kPanoramaHeight, kPanoramaRadius, stop);
     const std::vector<float> fourier = panorama_features(views, kPanoramaAngular, kPanoramaAxial);
     const std::vector<float> wavelet = panorama_wavelet_features(views, kPanoramaLevels);
     out.insert(out.end(), fourier.begin(), fourier.end());

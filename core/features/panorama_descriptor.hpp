@@ -27,7 +27,7 @@ std::vector<float> panorama_wavelet_features(const PanoramicViews& views, int le
 // The stored descriptor: per frame the Fourier then the wavelet features of the views, first
 // in the frame of the mesh (the surface's principal axes), then in its normals' frame
 // (normal_pose), kPanoramaSize values. Expects the centred, scaled, aligned frame of apply_pose.
-std::vector<float> panorama_descriptor(const Mesh& posed);
+std::vector<float> panorama_descriptor(const Mesh& posed, const StopRequested& stop = {});
 
 // Per frame, the mean of two distances in [0, 1]: the L1 distance of the Fourier features over
 // 6 (capped at 1; unrelated models lie about 3 apart: the median on SHREC 2007, SHREC 2011 and

@@ -112,7 +112,8 @@ void blend_slope_facing(const Cylinder& c) {
 
 }  // namespace
 
-PanoramicViews panoramic_views(const Mesh& mesh, int height, double radius) {
+PanoramicViews panoramic_views(const Mesh& mesh, int height, double radius,
+                               const StopRequested& stop) {
   PanoramicViews out;
   out.height = height;
   out.width = 2 * height;
@@ -128,9 +129,12 @@ PanoramicViews panoramic_views(const Mesh& mesh, int height, double radius) {
                      &out.image[std::size_t(2 * a)],
                      &out.image[std::size_t(2 * a + 1)]};
     std::vector<Corner> corners(std::size_t(mesh.V.rows()));
-    for (Eigen::Index v = 0; v < mesh.V.rows(); ++v)
+    for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) {
+      poll_interrupt(std::size_t(v), stop);
       corners[std::size_t(v)] = corner_at(c, mesh.V.row(v).transpose());
+    }
     for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+      poll_interrupt(std::size_t(f), stop);
       const Corner k[3] = {corners[std::size_t(mesh.F(f, 0))], corners[std::size_t(mesh.F(f, 1))],
                            corners[std::size_t(mesh.F(f, 2))]};
       const Eigen::Vector3d n = (k[1].p - k[0].p).cross(k[2].p - k[0].p);

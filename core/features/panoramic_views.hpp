@@ -4,6 +4,7 @@
 #include <array>
 #include <vector>
 
+#include "common/limits.hpp"
 #include "mesh/mesh.hpp"
 
 namespace arg {
@@ -22,6 +23,7 @@ struct PanoramicViews {
 };
 
 // Expects the centred, scaled frame of apply_pose (or any rotation of it).
-PanoramicViews panoramic_views(const Mesh& mesh, int height, double radius);
+PanoramicViews panoramic_views(const Mesh& mesh, int height, double radius,
+                               const StopRequested& stop = {});
 
 }  // namespace arg

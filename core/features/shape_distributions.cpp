@@ -72,10 +72,13 @@ std::vector<float> cords_histogram(const Mesh& mesh, int bins, double max_distan
 }
 
 std::array<float, kGlobalDims> global_descriptor(const Mesh& mesh, const Pose& pose,
-                                                 const GraphCounts& counts, double volume) {
+                                                 const GraphCounts& counts, double volume,
+                                                 const StopRequested& stop) {
   std::array<float, kGlobalDims> g{};
   std::vector<float> d2 = d2_histogram(mesh, 16, 4096);
+  check_interrupt(stop);  // each of these is a pass over the faces
   std::vector<float> cords = cords_histogram(mesh, 16);
+  check_interrupt(stop);
   std::copy(d2.begin(), d2.end(), g.begin());
   std::copy(cords.begin(), cords.end(), g.begin() + 16);
   float* stats = g.data() + 32;

@@ -28,6 +28,7 @@ struct GraphCounts {
 // The fixed-size descriptor stored first in every ARG: D2 (16 bins), cords (16 bins) and 16
 // shape statistics (PCA ratios, graph size per level, loops, components, compactness).
 std::array<float, kGlobalDims> global_descriptor(const Mesh& normalised_mesh, const Pose& pose,
-                                                 const GraphCounts& counts, double volume);
+                                                 const GraphCounts& counts, double volume,
+                                                 const StopRequested& stop = {});
 
 }  // namespace arg

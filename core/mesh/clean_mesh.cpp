@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/errors.hpp"
+#include "common/polled_sort.hpp"
 #include "mesh/mesh_edges.hpp"
 
 namespace arg {
@@ -15,20 +16,24 @@ namespace arg {
 namespace {
 
 // Maps every vertex to the first vertex with the same coordinates up to a relative tolerance.
-std::vector<int> weld_map(const Vertices& V, std::size_t* welded) {
+std::vector<int> weld_map(const Vertices& V, std::size_t* welded, const StopRequested& stop) {
   const Eigen::Index n = V.rows();
   Eigen::RowVector3d lo = V.colwise().minCoeff(), hi = V.colwise().maxCoeff();
   const double eps = std::max((hi - lo).norm() * 1e-10, 1e-300);
   std::vector<std::array<long long, 3>> key(static_cast<std::size_t>(n));
-  for (Eigen::Index i = 0; i < n; ++i)
+  for (Eigen::Index i = 0; i < n; ++i) {
+    poll_interrupt(std::size_t(i), stop);
     for (int c = 0; c < 3; ++c) key[i][c] = std::llround((V(i, c) - lo[c]) / eps);
+  }
   std::vector<int> order(static_cast<std::size_t>(n));
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(),
-            [&](int a, int b) { return key[a] != key[b] ? key[a] < key[b] : a < b; });
+  polled_sort(
+      order.begin(), order.end(),
+      [&](int a, int b) { return key[a] != key[b] ? key[a] < key[b] : a < b; }, stop);
   std::vector<int> map(static_cast<std::size_t>(n));
   *welded = 0;
   for (std::size_t k = 0; k < order.size(); ++k) {
+    poll_interrupt(k, stop);
     if (k > 0 && key[order[k]] == key[order[k - 1]]) {
       map[order[k]] = map[order[k - 1]];
       ++*welded;
@@ -51,9 +56,11 @@ std::vector<int> orient_patches(Triangles& F, const MeshEdges& E, std::size_t* f
   const int m = int(F.rows());
   // face -> its three edges, for the traversal
   std::vector<std::array<int, 3>> face_edges(std::size_t(m), {-1, -1, -1});
-  for (int e = 0; e < E.count(); ++e)
+  for (int e = 0; e < E.count(); ++e) {
+    poll_interrupt(std::size_t(e), stop);
     for (int k = E.face_begin[e]; k < E.face_begin[e + 1]; ++k)
       face_edges[E.face_of[k]][E.corner_of[k]] = e;
+  }
   auto direction = [&](int f, int a, int b) {  // +1 if f walks a->b, -1 if b->a
     for (int c = 0; c < 3; ++c) {
       if (F(f, c) == a && F(f, (c + 1) % 3) == b) return 1;
@@ -108,7 +115,7 @@ Mesh clean_mesh(const Mesh& in, CleanReport* report, const StopRequested& stop) 
         throw InputError("face " + std::to_string(f) + " refers to vertex " +
                          std::to_string(in.F(f, c)) + " of " + std::to_string(in.V.rows()));
 
-  std::vector<int> map = weld_map(in.V, &r.welded_vertices);
+  std::vector<int> map = weld_map(in.V, &r.welded_vertices, stop);
   check_interrupt(stop);
   Eigen::RowVector3d lo = in.V.colwise().minCoeff(), hi = in.V.colwise().maxCoeff();
   const double min_area = 1e-14 * (hi - lo).squaredNorm();
@@ -118,6 +125,7 @@ Mesh clean_mesh(const Mesh& in, CleanReport* report, const StopRequested& stop) 
   std::vector<int> kept;
   keys.reserve(std::size_t(in.F.rows()));
   for (Eigen::Index f = 0; f < in.F.rows(); ++f) {
+    poll_interrupt(std::size_t(f), stop);
     int a = map[in.F(f, 0)], b = map[in.F(f, 1)], c = map[in.F(f, 2)];
     if (a == b || b == c || a == c || triangle_area(in.V, a, b, c) <= min_area) {
       ++r.dropped_degenerate;
@@ -130,17 +138,21 @@ Mesh clean_mesh(const Mesh& in, CleanReport* report, const StopRequested& stop) 
   }
   std::vector<int> order(kept.size());
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(),
-            [&](int x, int y) { return keys[x] != keys[y] ? keys[x] < keys[y] : x < y; });
+  polled_sort(
+      order.begin(), order.end(),
+      [&](int x, int y) { return keys[x] != keys[y] ? keys[x] < keys[y] : x < y; }, stop);
   std::vector<char> duplicate(kept.size(), 0);
-  for (std::size_t k = 1; k < order.size(); ++k)
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    poll_interrupt(k, stop);
     if (keys[order[k]] == keys[order[k - 1]]) duplicate[order[k]] = 1, ++r.dropped_duplicate;
+  }
   check_interrupt(stop);
 
   // Compact: new vertex ids in order of first use by a kept face's original index.
   std::vector<int> new_id(std::size_t(in.V.rows()), -1);
   int nv = 0, nf = 0;
   for (std::size_t k = 0; k < kept.size(); ++k) {
+    poll_interrupt(k, stop);
     if (duplicate[k]) continue;
     ++nf;
     for (int c = 0; c < 3; ++c) {
@@ -151,22 +163,26 @@ Mesh clean_mesh(const Mesh& in, CleanReport* report, const StopRequested& stop) 
   if (nf == 0) throw InputError("mesh has no face with positive area");
   Mesh out;
   out.V.resize(nv, 3);
-  for (Eigen::Index v = 0; v < in.V.rows(); ++v)
+  for (Eigen::Index v = 0; v < in.V.rows(); ++v) {
+    poll_interrupt(std::size_t(v), stop);
     if (new_id[v] >= 0) out.V.row(new_id[v]) = in.V.row(v);
+  }
   r.unused_vertices = std::size_t(in.V.rows()) - std::size_t(nv) - r.welded_vertices;
   out.F.resize(nf, 3);
   const bool colour = in.has_colour();
   if (colour) out.C.resize(nf, 3);
   nf = 0;
   for (std::size_t k = 0; k < kept.size(); ++k) {
+    poll_interrupt(k, stop);
     if (duplicate[k]) continue;
     for (int c = 0; c < 3; ++c) out.F(nf, c) = new_id[map[in.F(kept[k], c)]];
     if (colour) out.C.row(nf) = in.C.row(kept[k]);
     ++nf;
   }
 
-  MeshEdges E = mesh_edges(out.F);
+  MeshEdges E = mesh_edges(out.F, stop);
   for (int e = 0; e < E.count(); ++e) {
+    poll_interrupt(std::size_t(e), stop);
     if (E.faces(e) == 1) ++r.boundary_edges;
     if (E.faces(e) > 2) ++r.nonmanifold_edges;
   }
@@ -177,6 +193,7 @@ Mesh clean_mesh(const Mesh& in, CleanReport* report, const StopRequested& stop) 
   std::vector<Eigen::Vector3d> centre(std::size_t(patches), Eigen::Vector3d::Zero());
   std::vector<double> area(std::size_t(patches), 0.0), volume(std::size_t(patches), 0.0);
   for (int f = 0; f < out.F.rows(); ++f) {
+    poll_interrupt(std::size_t(f), stop);
     double A = triangle_area(out.V, out.F(f, 0), out.F(f, 1), out.F(f, 2));
     Eigen::Vector3d c =
         (out.V.row(out.F(f, 0)) + out.V.row(out.F(f, 1)) + out.V.row(out.F(f, 2))).transpose() /
@@ -187,6 +204,7 @@ Mesh clean_mesh(const Mesh& in, CleanReport* report, const StopRequested& stop) 
   for (int p = 0; p < patches; ++p)
     if (area[p] > 0) centre[p] /= area[p];
   for (int f = 0; f < out.F.rows(); ++f) {
+    poll_interrupt(std::size_t(f), stop);
     const Eigen::Vector3d& o = centre[patch[f]];
     Eigen::Vector3d a = out.V.row(out.F(f, 0)).transpose() - o;
     Eigen::Vector3d b = out.V.row(out.F(f, 1)).transpose() - o;

@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <tuple>
 #include <vector>
 
+#include "common/polled_sort.hpp"
 #include "common/vec3.hpp"
 
 namespace arg {
@@ -136,22 +138,26 @@ bool try_collapse(Work& w, int a, int b, const CollapseOptions& options, double 
 
 }  // namespace
 
-Mesh collapse_short_edges(const Mesh& mesh, const CollapseOptions& options) {
+Mesh collapse_short_edges(const Mesh& mesh, const CollapseOptions& options,
+                          const StopRequested& stop) {
   Work w;
   const auto nv = static_cast<std::size_t>(mesh.V.rows());
   const auto nf = static_cast<std::size_t>(mesh.F.rows());
   w.V.resize(nv);
   for (std::size_t v = 0; v < nv; ++v) {
+    poll_interrupt(v, stop);
     const auto r = static_cast<Eigen::Index>(v);
     w.V[v] = {mesh.V(r, 0), mesh.V(r, 1), mesh.V(r, 2)};
   }
   w.F.resize(nf);
   w.faces_of.resize(nv);
-  for (std::size_t f = 0; f < nf; ++f)
+  for (std::size_t f = 0; f < nf; ++f) {
+    poll_interrupt(f, stop);
     for (int k = 0; k < 3; ++k) {
       w.F[f][k] = mesh.F(static_cast<Eigen::Index>(f), k);
       w.faces_of[w.F[f][k]].push_back(static_cast<int>(f));
     }
+  }
   w.face_alive.assign(nf, true);
   w.vertex_alive.assign(nv, true);
 
@@ -163,6 +169,7 @@ Mesh collapse_short_edges(const Mesh& mesh, const CollapseOptions& options) {
   for (int pass = 0; pass < 4; ++pass) {
     std::vector<std::tuple<double, int, int>> candidates;
     for (std::size_t f = 0; f < nf; ++f) {
+      poll_interrupt(f, stop);
       if (!w.face_alive[f]) continue;
       for (int k = 0; k < 3; ++k) {
         const int a = w.F[f][k], b = w.F[f][(k + 1) % 3];
@@ -171,9 +178,12 @@ Mesh collapse_short_edges(const Mesh& mesh, const CollapseOptions& options) {
         if (dot(d, d) < reach2) candidates.emplace_back(dot(d, d), a, b);
       }
     }
-    std::sort(candidates.begin(), candidates.end());
+    polled_sort(candidates.begin(), candidates.end(), std::less<>(), stop);
     int collapsed = 0;
+    std::size_t tried = 0;
     for (const auto& [len2, a, b] : candidates) {
+      // A collapse looks at two neighbourhoods (a few microseconds): poll every 256.
+      if ((tried++ & 255u) == 0) check_interrupt(stop);
       if (!w.vertex_alive[a] || !w.vertex_alive[b]) continue;
       collapsed += try_collapse(w, a, b, options, min_area2);
     }
@@ -182,8 +192,10 @@ Mesh collapse_short_edges(const Mesh& mesh, const CollapseOptions& options) {
 
   std::vector<int> new_index(nv, -1);
   int next = 0;
-  for (std::size_t v = 0; v < nv; ++v)
+  for (std::size_t v = 0; v < nv; ++v) {
+    poll_interrupt(v, stop);
     if (w.vertex_alive[v] && !w.faces_of[v].empty()) new_index[v] = next++;
+  }
   Mesh out;
   out.V.resize(next, 3);
   for (std::size_t v = 0; v < nv; ++v) {
@@ -197,9 +209,15 @@ Mesh collapse_short_edges(const Mesh& mesh, const CollapseOptions& options) {
   out.F.resize(live, 3);
   Eigen::Index row = 0;
   for (std::size_t f = 0; f < nf; ++f) {
+    poll_interrupt(f, stop);
     if (!w.face_alive[f]) continue;
     for (int k = 0; k < 3; ++k) out.F(row, k) = new_index[w.F[f][k]];
     ++row;
+  }
+  // Freed list by list, polling: a million small lists take a few hundred milliseconds to free.
+  for (std::size_t v = 0; v < nv; ++v) {
+    poll_interrupt(v, stop);
+    std::vector<int>().swap(w.faces_of[v]);
   }
   return out;
 }

@@ -1,6 +1,7 @@
 // Collapsing short edges, topology kept: slivers of marching, coarser copies for the spectrum.
 #pragma once
 
+#include "common/limits.hpp"
 #include "mesh/mesh.hpp"
 
 namespace arg {
@@ -16,6 +17,7 @@ struct CollapseOptions {
 // closed manifold closed, manifold and of the same genus, and when no surrounding triangle
 // would flip, turn by more than 60 degrees or lose its area. Only edges between two triangles
 // collapse, so a boundary stays where it is; colours are not carried (call before painting).
-Mesh collapse_short_edges(const Mesh& mesh, const CollapseOptions& options);
+Mesh collapse_short_edges(const Mesh& mesh, const CollapseOptions& options,
+                          const StopRequested& stop = {});
 
 }  // namespace arg

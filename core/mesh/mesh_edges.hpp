@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/limits.hpp"
 #include "mesh/mesh.hpp"
 
 namespace arg {
@@ -20,6 +21,6 @@ struct MeshEdges {
   int faces(int e) const { return face_begin[e + 1] - face_begin[e]; }
 };
 
-MeshEdges mesh_edges(const Triangles& F);
+MeshEdges mesh_edges(const Triangles& F, const StopRequested& stop = {});
 
 }  // namespace arg

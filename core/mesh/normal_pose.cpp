@@ -5,10 +5,11 @@
 
 namespace arg {
 
-Pose normal_pose(const Mesh& mesh) {
+Pose normal_pose(const Mesh& mesh, const StopRequested& stop) {
   Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
   double area = 0;
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    poll_interrupt(std::size_t(f), stop);
     const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)).transpose(),
                           b = mesh.V.row(mesh.F(f, 1)).transpose(),
                           c = mesh.V.row(mesh.F(f, 2)).transpose();
@@ -28,7 +29,7 @@ Pose normal_pose(const Mesh& mesh) {
     axes.row(k) = solver.eigenvectors().col(2 - k).transpose();
     pose.eigenvalues[k] = std::max(0.0, solver.eigenvalues()[2 - k]);
   }
-  orient_by_third_moment(mesh, Eigen::Vector3d::Zero(), 1.0, axes);
+  orient_by_third_moment(mesh, Eigen::Vector3d::Zero(), 1.0, axes, stop);
   pose.rotation = axes;
   return pose;
 }

@@ -11,6 +11,6 @@ namespace arg {
 // by the surface's third moment like surface_pose. Where the spread of the surface leaves its
 // axes ambiguous (a cube, a cylinder as tall as wide), that of its normals often does not,
 // so descriptors take the better of the two frames (Papadakis et al., PANORAMA).
-Pose normal_pose(const Mesh& posed);
+Pose normal_pose(const Mesh& posed, const StopRequested& stop = {});
 
 }  // namespace arg

@@ -7,13 +7,14 @@
 namespace arg {
 
 void orient_by_third_moment(const Mesh& mesh, const Eigen::Vector3d& centre, double rms,
-                            Eigen::Matrix3d& axes) {
+                            Eigen::Matrix3d& axes, const StopRequested& stop) {
   const auto& V = mesh.V;
   const auto& F = mesh.F;
   // Third moments along each axis, from the triangle centroids (exact enough for a sign).
   Eigen::Vector3d third = Eigen::Vector3d::Zero();
   double area = 0;
   for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    poll_interrupt(std::size_t(f), stop);
     Eigen::Vector3d a = V.row(F(f, 0)).transpose(), b = V.row(F(f, 1)).transpose(),
                     c = V.row(F(f, 2)).transpose();
     double A = 0.5 * (b - a).cross(c - a).norm();
@@ -25,7 +26,7 @@ void orient_by_third_moment(const Mesh& mesh, const Eigen::Vector3d& centre, dou
     if (third[k] < -1e-9 * area * rms * rms * rms) axes.row(k) *= -1.0;
 }
 
-Pose surface_pose(const Mesh& mesh) {
+Pose surface_pose(const Mesh& mesh, const StopRequested& stop) {
   const auto& V = mesh.V;
   const auto& F = mesh.F;
   Pose pose;
@@ -33,6 +34,7 @@ Pose surface_pose(const Mesh& mesh) {
   Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
   double area = 0;
   for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    poll_interrupt(std::size_t(f), stop);
     Eigen::Vector3d a = V.row(F(f, 0)).transpose(), b = V.row(F(f, 1)).transpose(),
                     c = V.row(F(f, 2)).transpose();
     double A = 0.5 * (b - a).cross(c - a).norm();
@@ -55,7 +57,7 @@ Pose surface_pose(const Mesh& mesh) {
     pose.eigenvalues[k] = std::max(0.0, solver.eigenvalues()[2 - k]);
   }
   const double rms = std::sqrt(std::max(cov.trace(), 0.0));
-  orient_by_third_moment(mesh, pose.centre, rms, axes);
+  orient_by_third_moment(mesh, pose.centre, rms, axes, stop);
   pose.rotation = axes;
   pose.scale = rms > 0 ? 1.0 / rms : 1.0;
   return pose;

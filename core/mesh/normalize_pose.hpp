@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 
+#include "common/limits.hpp"
 #include "mesh/mesh.hpp"
 
 namespace arg {
@@ -18,12 +19,12 @@ struct Pose {
 // Computes the pose of a surface from exact area integrals over its triangles. Axis signs follow
 // the third moment (the heavier tail of the surface along each axis points to +), so mirror
 // images get the same frame; an axis with a vanishing third moment keeps the solver's sign.
-Pose surface_pose(const Mesh& mesh);
+Pose surface_pose(const Mesh& mesh, const StopRequested& stop = {});
 
 // Flips the rows of `axes` so that the surface's third moment about `centre` along each is not
 // negative (below -1e-9 area rms^3 counts as negative); the rule surface_pose uses.
 void orient_by_third_moment(const Mesh& mesh, const Eigen::Vector3d& centre, double rms,
-                            Eigen::Matrix3d& axes);
+                            Eigen::Matrix3d& axes, const StopRequested& stop = {});
 
 // Applies a pose: V' = scale * rotation * (V - centre).
 Mesh apply_pose(const Mesh& mesh, const Pose& pose);

@@ -6,7 +6,7 @@
 namespace arg {
 
 Mesh taubin_smoothing(const Mesh& mesh, const MeshEdges& edges, int iterations, double lambda,
-                      double mu) {
+                      double mu, const StopRequested& stop) {
   Mesh out = mesh;
   const Eigen::Index n = mesh.V.rows();
   // Each vertex's neighbours in increasing order (compressed rows): a pass then reads its
@@ -26,6 +26,7 @@ Mesh taubin_smoothing(const Mesh& mesh, const MeshEdges& edges, int iterations, 
   for (int it = 0; it < 2 * iterations; ++it) {
     const double step = it % 2 == 0 ? lambda : mu;
     for (Eigen::Index v = 0; v < n; ++v) {
+      poll_interrupt(std::size_t(v), stop);
       const int b = begin[std::size_t(v)], e = begin[std::size_t(v) + 1];
       if (b == e) {
         next.row(v) = out.V.row(v);

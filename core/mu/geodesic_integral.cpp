@@ -59,9 +59,10 @@ std::vector<double> geodesic_integral(const Mesh& mesh, const MeshEdges& edges, 
                                       int threads, const StopRequested& stop) {
   const int nv = int(mesh.V.rows());
   std::vector<double> varea = vertex_areas(mesh);
+  check_interrupt(stop);
   double total_area = 0;
   for (double a : varea) total_area += a;
-  SurfaceGraph graph = surface_graph(mesh, edges, 2.0 * target_edge(total_area, 4000.0));
+  SurfaceGraph graph = surface_graph(mesh, edges, 2.0 * target_edge(total_area, 4000.0), stop);
   check_interrupt(stop);
 
   std::vector<int> base = spread_base_points(mesh.V, base_points, stop);
@@ -85,6 +86,7 @@ std::vector<double> geodesic_integral(const Mesh& mesh, const MeshEdges& edges, 
     parallel_for(std::size_t(here), workers, [&](std::size_t k) {
       shortest_paths_quantised(graph, base[start + k], buffers[k], scratch[k], stop);
     });
+    check_interrupt(stop);
     for (int k = 0; k < here; ++k) {
       const double s = weight[start + std::size_t(k)];
       const std::vector<float>& d = buffers[k];

@@ -9,12 +9,14 @@
 
 namespace arg {
 
-SurfaceGraph surface_graph(const Mesh& mesh, const MeshEdges& E, double max_edge) {
+SurfaceGraph surface_graph(const Mesh& mesh, const MeshEdges& E, double max_edge,
+                           const StopRequested& stop) {
   const int nv = int(mesh.V.rows());
   // Steiner points per edge, numbered after the mesh vertices.
   std::vector<int> steiner_begin(std::size_t(E.count()) + 1, nv);
   std::vector<Eigen::Vector3d> points;
   for (int e = 0; e < E.count(); ++e) {
+    poll_interrupt(std::size_t(e), stop);
     Eigen::Vector3d a = mesh.V.row(E.v0[e]).transpose(), b = mesh.V.row(E.v1[e]).transpose();
     double len = (b - a).norm();
     int s = max_edge > 0 ? std::min(8, int(std::ceil(len / max_edge)) - 1) : 0;
@@ -30,6 +32,7 @@ SurfaceGraph surface_graph(const Mesh& mesh, const MeshEdges& E, double max_edge
   pairs.reserve(std::size_t(E.count()) * 2 + points.size() * 4);
   // Along each edge: v0, its Steiner points in order, v1.
   for (int e = 0; e < E.count(); ++e) {
+    poll_interrupt(std::size_t(e), stop);
     int prev = E.v0[e];
     for (int p = steiner_begin[e]; p < steiner_begin[e + 1]; ++p)
       pairs.emplace_back(prev, p), prev = p;
@@ -38,11 +41,14 @@ SurfaceGraph surface_graph(const Mesh& mesh, const MeshEdges& E, double max_edge
   // Across each face: every point on one side to every point on the other two sides. Only
   // faces with Steiner points add anything new (corner-to-corner pairs are the mesh edges).
   std::vector<std::array<int, 3>> face_edge(std::size_t(mesh.F.rows()), {-1, -1, -1});
-  for (int e = 0; e < E.count(); ++e)
+  for (int e = 0; e < E.count(); ++e) {
+    poll_interrupt(std::size_t(e), stop);
     for (int k = E.face_begin[e]; k < E.face_begin[e + 1]; ++k)
       face_edge[E.face_of[k]][E.corner_of[k]] = e;
+  }
   std::vector<int> side[3];
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    poll_interrupt(std::size_t(f), stop);
     bool any = false;
     for (int c = 0; c < 3; ++c) {
       int e = face_edge[f][c];
@@ -66,17 +72,22 @@ SurfaceGraph surface_graph(const Mesh& mesh, const MeshEdges& E, double max_edge
   // Links between connected components, so mu is defined on multi-part objects.
   std::vector<int> component;
   int components = vertex_components(mesh, component);
+  check_interrupt(stop);
   for (auto [a, b] : component_links(mesh, component, components)) pairs.emplace_back(a, b);
 
   SurfaceGraph g;
   g.mesh_vertices = nv;
   g.offset.assign(std::size_t(nodes) + 1, 0);
+  check_interrupt(stop);
   for (auto [a, b] : pairs) ++g.offset[a + 1], ++g.offset[b + 1];
   for (int i = 0; i < nodes; ++i) g.offset[i + 1] += g.offset[i];
   g.target.resize(std::size_t(g.offset[nodes]));
   g.length.resize(g.target.size());
   std::vector<int> cursor(g.offset.begin(), g.offset.end() - 1);
+  check_interrupt(stop);
+  std::size_t done = 0;
   for (auto [a, b] : pairs) {
+    poll_interrupt(done++, stop);
     float len = float((position(a) - position(b)).norm());
     g.target[cursor[a]] = b, g.length[cursor[a]++] = len;
     g.target[cursor[b]] = a, g.length[cursor[b]++] = len;

@@ -22,6 +22,7 @@ struct SurfaceGraph {
 // `max_edge`: edges longer than this get Steiner points about max_edge apart (at most 8 each);
 // inside a face, points on different sides are joined by straight segments. Components are
 // joined to the largest one by their nearest vertex pair (see connected_components.hpp).
-SurfaceGraph surface_graph(const Mesh& mesh, const MeshEdges& edges, double max_edge);
+SurfaceGraph surface_graph(const Mesh& mesh, const MeshEdges& edges, double max_edge,
+                           const StopRequested& stop = {});
 
 }  // namespace arg

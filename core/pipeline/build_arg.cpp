@@ -31,13 +31,13 @@ constexpr int kSmoothing = 80;
 // A copy smoothed against noise of the size of an edge, for a mesh whose edges are short
 // (mean under 2% of its bounding box's diagonal: scans and fine meshes). A coarse mesh's edges
 // are its shape, and smoothing would round a 12-triangle box into a blob, so it stays as it is.
-Mesh smoothed(const Mesh& mesh, const MeshEdges& edges) {
+Mesh smoothed(const Mesh& mesh, const MeshEdges& edges, const StopRequested& stop) {
   double sum = 0;
   for (int e = 0; e < edges.count(); ++e)
     sum += (mesh.V.row(edges.v0[e]) - mesh.V.row(edges.v1[e])).norm();
   const double diagonal = (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).norm();
   if (!(edges.count() > 0) || sum / edges.count() >= 0.02 * diagonal) return mesh;
-  return taubin_smoothing(mesh, edges, kSmoothing);
+  return taubin_smoothing(mesh, edges, kSmoothing, 0.5, -0.53, stop);
 }
 
 class Stopwatch {
@@ -102,7 +102,7 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
   rep.proxy = prepared.proxy.has_value();
   rep.ms.clean = clock.lap();
   const Mesh& mesh = prepared.surface();
-  const MeshEdges proxy_edges = prepared.proxy ? mesh_edges(mesh.F) : MeshEdges{};
+  const MeshEdges proxy_edges = prepared.proxy ? mesh_edges(mesh.F, stop) : MeshEdges{};
   const MeshEdges& edges = prepared.proxy ? proxy_edges : prepared.posed_edges;
   rep.ms.normalise = clock.lap();
 
@@ -117,11 +117,12 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
   // normals measure noise of the size of an edge as readily as shape, and a scan's noise would
   // otherwise fill the curvature histograms and speckle the views. A proxy is a level set
   // already smooth at its voxel size (and a soup's views see its parts as they are).
-  const Mesh smooth = prepared.proxy ? Mesh{} : smoothed(mesh, edges);
-  const TriangleCurvature curvature = triangle_curvature(prepared.proxy ? mesh : smooth, edges);
+  const Mesh smooth = prepared.proxy ? Mesh{} : smoothed(mesh, edges, stop);
+  const TriangleCurvature curvature =
+      triangle_curvature(prepared.proxy ? mesh : smooth, edges, stop);
   double volume = 0;
   std::vector<std::vector<ArgNode>> per_level =
-      node_attributes(mesh, sliced, reeb, curvature, &volume);
+      node_attributes(mesh, sliced, reeb, curvature, &volume, stop);
   check_interrupt(stop);
 
   ArgGraph g;
@@ -147,13 +148,15 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
     counts.nodes_per_level[std::size_t(r)] = int(per_level[std::size_t(r)].size());
   counts.loops = reeb.loops;
   counts.components = int(rep.components);
-  g.global = global_descriptor(mesh, pose, counts, volume);
+  g.global = global_descriptor(mesh, pose, counts, volume, stop);
+  check_interrupt(stop);
   // The spectrum only counts between models whose surface is the shape's own (similarity.cpp).
   if (!(s.flags & (kFlagProxy | kFlagWideOpen)))
     g.spectrum = laplace_spectrum(mesh, kSpectrumSize, stop);
   check_interrupt(stop);
   // The views see the model as it was given, not its proxy: a soup's parts as they are.
-  g.panorama = panorama_descriptor(prepared.proxy ? prepared.posed : smooth);
+  g.panorama = panorama_descriptor(prepared.proxy ? prepared.posed : smooth, stop);
+  check_interrupt(stop);
   pool_fragments(g, max_nodes_per_level(options.levels));
   rep.ms.features = clock.lap();
   // What a reader of the stored value will see: SIM is the same for a graph just built and

@@ -82,13 +82,13 @@ void join_torn_pieces(Mesh& mesh, std::vector<int>& component, PreparedSurface& 
   std::vector<int> piece = component;
   std::size_t pieces = out.components, pairs = 0, set_aside = 0;
   const Mesh moved =
-      stitch_pieces(mesh, mesh_edges(mesh.F), component, kTearGap * diagonal, &pairs, stop);
+      stitch_pieces(mesh, mesh_edges(mesh.F, stop), component, kTearGap * diagonal, &pairs, stop);
   if (pairs > 0) {
     joined = clean_again(moved, report, stop);
     // A stitch that pinched a few rims together (a rim vertex snapped where two sides met)
     // leaves a handful of fins: their faces go, and the small holes are filled below.
     if (report.nonmanifold_edges > 0) {
-      const MeshEdges edges = mesh_edges(joined.F);
+      const MeshEdges edges = mesh_edges(joined.F, stop);
       if (report.nonmanifold_edges * 1000 <= std::size_t(edges.count()))
         joined = clean_again(without_nonmanifold_faces(joined, edges), report, stop);
     }
@@ -97,8 +97,8 @@ void join_torn_pieces(Mesh& mesh, std::vector<int>& component, PreparedSurface& 
   }
   std::size_t tubes = 0;
   if (pieces > 1) {
-    const Mesh bridged =
-        bridge_pieces(joined, mesh_edges(joined.F), piece, kBridgeGap * diagonal, &tubes, stop);
+    const Mesh bridged = bridge_pieces(joined, mesh_edges(joined.F, stop), piece,
+                                       kBridgeGap * diagonal, &tubes, stop);
     // A tube whose cleaning leaves non-manifold edges (welded onto a rim it crosses) is not
     // kept; what stitching joined still is.
     CleanReport with_tubes = report;
@@ -123,7 +123,7 @@ void join_torn_pieces(Mesh& mesh, std::vector<int>& component, PreparedSurface& 
     total = std::accumulate(area.begin(), area.end(), 0.0);
   }
   if (pieces > 1 && area[1] >= 0.01 * total) return;
-  if (wide_open(boundary_length(joined, mesh_edges(joined.F)), total)) return;
+  if (wide_open(boundary_length(joined, mesh_edges(joined.F, stop)), total)) return;
   mesh = std::move(joined);
   component = std::move(piece);
   out.clean = report;
@@ -143,17 +143,22 @@ PreparedSurface prepare_surface(const Mesh& input, const BuildOptions& options,
   // ratios below are the same before and after the pose.
   std::vector<int> component;
   out.components = std::size_t(vertex_components(mesh, component));
+  // Between the steps below, each a pass or two over the faces (a few hundred milliseconds
+  // together on millions of them).
+  check_interrupt(stop);
   if (options.holes == HoleKind::Fill) join_torn_pieces(mesh, component, out, stop);
   // Components are numbered by decreasing area: the second one tells whether the surface is
   // in pieces or merely carries specks.
   const std::vector<double> piece_area = component_areas(mesh, component, out.components);
   const double total = std::accumulate(piece_area.begin(), piece_area.end(), 0.0);
   const double second = piece_area.size() > 1 ? piece_area[1] : 0.0;
+  check_interrupt(stop);
   // The pose moves vertices and at most turns faces over (below): these edges serve the posed
   // mesh too (recomputed if holes are filled, which adds faces).
-  out.posed_edges = mesh_edges(mesh.F);
+  out.posed_edges = mesh_edges(mesh.F, stop);
   const MeshEdges& edges = out.posed_edges;
   const double boundary = boundary_length(mesh, edges);
+  check_interrupt(stop);
   const bool broken =
       second >= 0.01 * total || out.clean.nonmanifold_edges * 1000 > std::size_t(edges.count());
   out.use_proxy =
@@ -166,17 +171,21 @@ PreparedSurface prepare_surface(const Mesh& input, const BuildOptions& options,
     FillReport filled;
     mesh = fill_holes(mesh, &filled);
     out.filled_loops = filled.loops;
-    if (filled.added_faces > 0) out.posed_edges = mesh_edges(mesh.F);
+    if (filled.added_faces > 0) out.posed_edges = mesh_edges(mesh.F, stop);
   }
-  out.pose = surface_pose(mesh);
+  check_interrupt(stop);
+  out.pose = surface_pose(mesh, stop);
   if (!(out.pose.area > 0)) throw InputError("mesh has zero surface area");
+  check_interrupt(stop);
   out.posed = apply_pose(mesh, out.pose);
+  check_interrupt(stop);
   // A mirroring pose swaps each face's second and third corners (apply_pose): the edge a face
   // called its first (corners 0-1) is now its third (2-0), and the other way round.
   if (out.pose.rotation.determinant() < 0)
     for (std::int8_t& c : out.posed_edges.corner_of) c = std::int8_t(c == 1 ? 1 : 2 - c);
   out.boundary_length = boundary * out.pose.scale;
   out.area = surface_area(out.posed);
+  check_interrupt(stop);
   if (out.use_proxy) {
     ProxyOptions proxy;
     proxy.resolution = options.proxy_resolution;

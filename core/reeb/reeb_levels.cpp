@@ -71,6 +71,7 @@ ReebGraph reeb_levels(const SlicedSurface& s, const MeshEdges& E, int levels,
     for (int k = E.face_begin[e] + 1; k < E.face_begin[e + 1]; ++k)
       for (int j = k0; j <= k1; ++j) uf.unite(piece_at(f0, j), piece_at(E.face_of[k], j));
   }
+  check_interrupt(stop);
   std::vector<int> piece_interval(static_cast<std::size_t>(pieces));
   for (int p = 0; p < pieces; ++p) piece_interval[p] = s.pieces[p].interval;
 
@@ -78,6 +79,7 @@ ReebGraph reeb_levels(const SlicedSurface& s, const MeshEdges& E, int levels,
   g.levels.resize(std::size_t(levels) + 1);
   ReebLevel& finest = g.levels[std::size_t(levels)];
   g.piece_node = number_classes(uf, pieces, piece_interval, finest.interval);
+  check_interrupt(stop);
   for (std::size_t f = 0; f + 1 < s.piece_begin.size(); ++f)
     for (int p = s.piece_begin[f]; p + 1 < s.piece_begin[f + 1]; ++p)
       finest.edges.emplace_back(g.piece_node[p], g.piece_node[p + 1]);

@@ -82,7 +82,13 @@ SlicedSurface slice_intervals(const Mesh& mesh, const std::vector<double>& mu_in
     s.first_interval[f] = interval_of(lo, intervals);
     s.piece_begin[f + 1] = s.piece_begin[f] + interval_of(hi, intervals) - s.first_interval[f] + 1;
   }
-  s.pieces.resize(std::size_t(s.piece_begin[m]));
+  // Grown in steps, polling: the pieces of millions of triangles take a second to zero.
+  const std::size_t pieces = std::size_t(s.piece_begin[m]);
+  s.pieces.reserve(pieces);
+  while (s.pieces.size() < pieces) {
+    check_interrupt(stop);
+    s.pieces.resize(std::min(pieces, s.pieces.size() + (std::size_t(1) << 16)));
+  }
   std::vector<Corner> triangle(3), poly, scratch;
   for (Eigen::Index f = 0; f < m; ++f) {
     if ((f & 4095) == 0) check_interrupt(stop);
