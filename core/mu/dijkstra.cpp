@@ -120,13 +120,18 @@ void prepare_buckets(const SurfaceGraph& g, BucketScratch& s) {
   // would need more than 2^16 buckets.
   s.unit = std::max(mean / 32.0, longest / 65535.0);
   if (!(s.unit > 0)) s.unit = 1.0;
-  s.length.resize(g.length.size());
+  s.arc.resize(g.length.size());
   std::uint32_t max_len = 0;
   for (std::size_t k = 0; k < g.length.size(); ++k) {
-    s.length[k] = std::uint32_t(std::lround(double(g.length[k]) / s.unit));
-    max_len = std::max(max_len, s.length[k]);
+    const auto len = std::uint32_t(std::lround(double(g.length[k]) / s.unit));
+    s.arc[k] = std::uint64_t(std::uint32_t(g.target[k])) | (std::uint64_t(len) << 32);
+    max_len = std::max(max_len, len);
   }
-  s.buckets.assign(std::size_t(max_len) + 1, {});
+  std::size_t ring = 1;
+  while (ring <= max_len) ring <<= 1;
+  s.mask = ring - 1;
+  s.buckets.assign(ring, {});
+  s.empty = true;
 }
 
 void shortest_paths_quantised(const SurfaceGraph& g, int source, std::vector<float>& distance,
@@ -134,34 +139,41 @@ void shortest_paths_quantised(const SurfaceGraph& g, int source, std::vector<flo
   const std::size_t n = std::size_t(g.nodes());
   const std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
   s.dist.assign(n, none);
-  const std::size_t ring = s.buckets.size();
-  for (auto& b : s.buckets) b.clear();
-  s.dist[std::size_t(source)] = 0;
+  // A run that ends normally leaves every bucket empty; one stopped by a cancel does not.
+  if (!s.empty)
+    for (auto& b : s.buckets) b.clear();
+  s.empty = false;
+  std::uint32_t* const dist = s.dist.data();
+  const std::uint64_t* const arc = s.arc.data();
+  const int* const offset = g.offset.data();
+  dist[source] = 0;
   s.buckets[0].push_back(source);
   std::size_t pending = 1, pops = 0;
   for (std::uint64_t current = 0; pending > 0; ++current) {
-    std::vector<int>& bucket = s.buckets[current % ring];
+    std::vector<int>& bucket = s.buckets[current & s.mask];
     while (!bucket.empty()) {
       const int v = bucket.back();
       bucket.pop_back();
       --pending;
-      if (s.dist[std::size_t(v)] != current) continue;  // a stale entry
+      if (dist[v] != current) continue;  // a stale entry
       if ((++pops & 8191) == 0) check_interrupt(stop);
-      for (int k = g.offset[std::size_t(v)]; k < g.offset[std::size_t(v) + 1]; ++k) {
-        const int w = g.target[std::size_t(k)];
-        const std::uint64_t nd = current + s.length[std::size_t(k)];
-        if (nd < s.dist[std::size_t(w)]) {
-          s.dist[std::size_t(w)] = std::uint32_t(nd);
-          s.buckets[nd % ring].push_back(w);
+      for (int k = offset[v]; k < offset[v + 1]; ++k) {
+        const std::uint64_t a = arc[k];
+        const auto w = std::uint32_t(a);
+        const std::uint64_t nd = current + (a >> 32);
+        if (nd < dist[w]) {
+          dist[w] = std::uint32_t(nd);
+          s.buckets[nd & s.mask].push_back(int(w));
           ++pending;
         }
       }
     }
   }
+  s.empty = true;
   distance.resize(n);
   for (std::size_t v = 0; v < n; ++v)
     distance[v] =
-        s.dist[v] == none ? std::numeric_limits<float>::infinity() : float(s.dist[v] * s.unit);
+        dist[v] == none ? std::numeric_limits<float>::infinity() : float(dist[v] * s.unit);
 }
 
 }  // namespace arg

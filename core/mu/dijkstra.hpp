@@ -19,10 +19,16 @@ void shortest_paths(const SurfaceGraph& graph, const std::vector<int>& sources,
 // heap, and the rounding (at most unit / 2 per edge, unbiased) is negligible for mu, an
 // integral over many paths. `buckets` is scratch space reused between calls.
 struct BucketScratch {
+  // A ring of 2^k buckets, more than the longest quantised edge: a node's tentative distance is
+  // at most that far past the bucket being emptied, so indices masked by `mask` never collide.
   std::vector<std::vector<int>> buckets;
-  std::vector<std::uint32_t> length;  // quantised edge lengths
+  std::size_t mask = 0;
+  // Per graph edge, in the graph's order: the target in the low half, the quantised length in
+  // the high half (one load per relaxation).
+  std::vector<std::uint64_t> arc;
   std::vector<std::uint32_t> dist;
   double unit = 0;
+  bool empty = true;  // every bucket empty: false while a run is under way or was stopped
 };
 
 // Quantises the graph's edge lengths once for many shortest_paths_quantised calls.

@@ -7,6 +7,7 @@
 #include <functional>
 #include <vector>
 
+#include "common/errors.hpp"
 #include "mesh/mesh_edges.hpp"
 #include "mu/dijkstra.hpp"
 #include "mu/mu_function.hpp"
@@ -164,6 +165,23 @@ TEST(GeodesicIntegral, LengthsRoundedForTheBucketQueueChangeDistancesLittle) {
     }
     // Measured: 1.30% (plane), 1.13% (tube), 1.73% (sphere).
     EXPECT_LT(worst, 0.021);
+  }
+}
+
+TEST(GeodesicIntegral, ARunStoppedMidwayLeavesTheScratchReadyForTheNext) {
+  // A stopped run leaves entries in the ring of buckets; the next run must not see them.
+  const Mesh sphere = test::icosphere(5);  // 10,242 vertices: polled after 8,192 of them
+  const SurfaceGraph g = surface_graph(sphere, mesh_edges(sphere.F), integral_max_edge(sphere));
+  BucketScratch fresh, reused;
+  prepare_buckets(g, fresh);
+  prepare_buckets(g, reused);
+  const StopRequested stop_soon = [] { return true; };
+  std::vector<float> expected, got;
+  EXPECT_THROW(shortest_paths_quantised(g, 0, got, reused, stop_soon), Interrupted);
+  for (int source : {5, 700}) {
+    shortest_paths_quantised(g, source, expected, fresh);
+    shortest_paths_quantised(g, source, got, reused);
+    EXPECT_EQ(got, expected) << source;
   }
 }
 
