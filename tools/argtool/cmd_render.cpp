@@ -15,7 +15,7 @@
 namespace {
 
 struct RenderArgs {
-  std::string mesh, output, view = "front", shading = "smooth", title;
+  std::string mesh, output, view = "front", shading = "smooth", title, surface = "mu";
   int level = 2, size = 512;
   bool no_legend = false, no_graph = false;
   arg::BuildOptions options;
@@ -39,7 +39,8 @@ int run_render(const RenderArgs& a) {
   ro.level = a.level;
   ro.view = arg::parse_view(a.view);
   ro.shading = arg::parse_shading(a.shading);
-  ro.legend = !a.no_legend;
+  ro.own_colours = a.surface == "colours";
+  ro.legend = !a.no_legend && !ro.own_colours;  // a legend of mu explains mu colours only
   ro.graph = !a.no_graph;
   if (a.level > a.options.levels)
     throw std::runtime_error("--level " + std::to_string(a.level) + " is finer than --levels " +
@@ -83,6 +84,11 @@ const bool registered = argtool::register_command(
       app.add_option("--title", a->title, "caption (default: file name, level, node count)");
       app.add_flag("--no-legend", a->no_legend, "leave out the colour legend");
       app.add_flag("--no-graph", a->no_graph, "draw the surface only");
+      app.add_option("--surface", a->surface,
+                     "mu (coloured by mu, striped by the level's intervals) or colours (the "
+                     "model's own colours, clay where it has none)")
+          ->check(CLI::IsMember({"mu", "colours"}))
+          ->capture_default_str();
       argtool::add_build_flags(app, a->options);
       return [a] { return run_render(*a); };
     });
