@@ -59,8 +59,9 @@ load_catalogue() {
 
 every_thumbnail() {
   "$python" tools/browser/thumbnails.py --argtool "$build/argtool" &&
-    [[ $(psql -X -tAc "SELECT count(*) FROM objects WHERE thumbnail IS NULL
-                        OR substr(thumbnail, 1, 8) <> '\\x89504e470d0a1a0a'::bytea") -eq 0 ]]
+    [[ $(psql -X -tAc "SELECT count(*) FROM objects WHERE thumbnail IS NULL OR thumbnail_mu IS NULL
+                        OR substr(thumbnail, 1, 8) <> '\\x89504e470d0a1a0a'::bytea
+                        OR substr(thumbnail_mu, 1, 8) <> '\\x89504e470d0a1a0a'::bytea") -eq 0 ]]
 }
 
 start_browser() {
@@ -69,7 +70,7 @@ start_browser() {
 
 step "a database for the browser's catalogue" make_database
 step "the sample catalogue loads as the demo loads it (tools/demo/load.sql)" load_catalogue
-step "every model gets a PNG thumbnail in the table (argtool render)" every_thumbnail
+step "every model gets PNG thumbnails in the table, own colours and mu (argtool render)" every_thumbnail
 step "the browser starts beside the cluster and answers" start_browser
 
 url=$(tools/browser/server.sh url "$work")
