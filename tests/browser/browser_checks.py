@@ -396,6 +396,16 @@ class Browser:
                f"an unknown node: HTTP {status}: {re.sub(r'<[^>]+>', ' ', page)[:200]!r}")
         status, _, page = self.http("GET", f"pair/{model['id']}/999999")
         expect(status == 404 and "no model 999999" in page, f"a pair with an unknown object: HTTP {status}")
+        # The largest model, over the limit run_browser_tests.sh sets: too large to display.
+        with psycopg.connect() as conn:
+            large = conn.execute("SELECT id, (arg_info(descr)->>'triangles')::int FROM objects "
+                                 "ORDER BY 2 DESC, id LIMIT 1").fetchone()
+        assert large is not None
+        self.open(f"object/{large[0]}", "#title")
+        self.wait(lambda d: d.find_element(By.ID, "view-message").is_displayed())
+        text = self.d.find_element(By.ID, "view-message").text
+        expect(f"too large to display in 3D: {large[1]:,} triangles" in text,
+               f"a model too large to display: the page says {text!r}")
         # An object without a mesh: its page says so where the view would be.
         with psycopg.connect(autocommit=True) as conn:
             conn.execute("INSERT INTO objects (id, model_id, title) VALUES (999998, 'no-mesh', 'No mesh')")
@@ -437,7 +447,8 @@ class Browser:
             ("a pair page shows SIM's terms with their weights, adding up to the SIM shown", self.pair_terms_sum_to_sim),
             ("shape only, shape and colour, colour first: the order changes", self.presets_change_the_order),
             ("a click on the 3D view searches by that part, each match ringed", self.part_click_finds_parts),
-            ("an unknown object, node or pair, or no mesh, gets a clear message", self.bad_view_input_is_clear),
+            ("an unknown object, node or pair, no mesh or too many triangles: a clear message",
+             self.bad_view_input_is_clear),
             ("the browser listens on 127.0.0.1 only", self.listens_on_localhost_only),
         ]
 

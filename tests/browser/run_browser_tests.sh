@@ -65,7 +65,10 @@ every_thumbnail() {
 }
 
 start_browser() {
-  tools/browser/server.sh stop "$work" && tools/browser/server.sh start "$work"
+  # The largest sample model stands for one too large to display in 3D.
+  ARG_VIEW_MAX_TRIANGLES=$(psql -X -tAc "SELECT max((arg_info(descr)->>'triangles')::int) - 1 FROM objects") &&
+    export ARG_VIEW_MAX_TRIANGLES &&
+    tools/browser/server.sh stop "$work" && tools/browser/server.sh start "$work"
 }
 
 step "a database for the browser's catalogue" make_database
