@@ -371,6 +371,19 @@ class Browser:
         box = self.d.find_element(By.ID, "view3d")
         picked = int(box.get_attribute("data-picked"))
         expect(picked >= 0, "a click in the middle of the 3D view picked no node")
+        # Node 1's disc, found by its colour (viewer.js's second node colour), picks node 1.
+        before = self.picture(canvas)
+        self.d.find_element(By.ID, "view-graph").click()
+        shot = self.redraw(canvas, before, "after showing the graph")
+        width, height = shot.size
+        disc = [(x, y) for y in range(0, height, 2) for x in range(0, width, 2)
+                if sum(abs(a - b) for a, b in zip(shot.getpixel((x, y)), (255, 127, 14))) < 20]
+        expect(len(disc) > 10, f"node 1's disc not found in the 3D view ({len(disc)} pixels)")
+        x, y = sum(p[0] for p in disc) // len(disc), sum(p[1] for p in disc) // len(disc)
+        ActionChains(self.d).move_to_element_with_offset(canvas, x - width // 2, y - height // 2) \
+            .click().perform()
+        expect(box.get_attribute("data-picked") == "1",
+               f"a click on node 1's disc picked node {box.get_attribute('data-picked')}")
         link = self.d.find_element(By.ID, "part-link")
         expect(link.is_displayed(), "no link to search by the picked part")
         self.click_to(link, "#parts")
@@ -446,7 +459,8 @@ class Browser:
             ("the 3D view's graph toggle shows the level's nodes, mu colours the surface", self.view_graph_toggle),
             ("a pair page shows SIM's terms with their weights, adding up to the SIM shown", self.pair_terms_sum_to_sim),
             ("shape only, shape and colour, colour first: the order changes", self.presets_change_the_order),
-            ("a click on the 3D view searches by that part, each match ringed", self.part_click_finds_parts),
+            ("a click on the surface or a node's disc picks a node; its part search rings each match",
+             self.part_click_finds_parts),
             ("an unknown object, node or pair, no mesh or too many triangles: a clear message",
              self.bad_view_input_is_clear),
             ("the browser listens on 127.0.0.1 only", self.listens_on_localhost_only),

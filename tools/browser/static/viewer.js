@@ -1,6 +1,6 @@
 // The object page's 3D view: the surface of view.json (argtool view-data) turned with the mouse,
 // shaded with its own colours, mu or its nodes at a level, the Reeb graph's nodes on demand, and
-// a click on the surface picks the node there (search by that part).
+// a click on a node's disc or on the surface picks that node (search by that part).
 import * as THREE from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 
@@ -148,6 +148,7 @@ function show(data) {
         color: new THREE.Color(...linear(nodeColour(n))), depthTest: false,
       }));
       disc.position.copy(centre(n));
+      disc.userData.node = n;
       disc.renderOrder = 2;
       graph.add(disc);
     }
@@ -169,8 +170,10 @@ function show(data) {
     const rect = renderer.domElement.getBoundingClientRect();
     ray.setFromCamera(new THREE.Vector2(((e.clientX - rect.left) / rect.width) * 2 - 1,
                                         -((e.clientY - rect.top) / rect.height) * 2 + 1), camera);
-    const hit = ray.intersectObject(surface)[0];
-    picked = hit ? data.levels[level()].face_nodes[hit.faceIndex] : -1;
+    // A node's disc is drawn over the surface, so a click on it picks it wherever it lies.
+    const disc = ray.intersectObjects(graph.children.filter((o) => o.isMesh))[0];
+    const hit = disc ? null : ray.intersectObject(surface)[0];
+    picked = disc ? disc.object.userData.node : hit ? data.levels[level()].face_nodes[hit.faceIndex] : -1;
     box.dataset.picked = String(picked);
     if (partLink) {
       partLink.hidden = picked < 0;
