@@ -151,4 +151,4 @@ demo-stop:
 
 distclean: demo-stop
 	tools/pg/cluster.sh stop $(BUILD_DIR)/pg-test --remove
-	rm -rf $(BUILD_DIR) build-asan build-fuzz .deps
+	rm -rf $(BUILD_DIR) build-asan build-fuzz .deps tools/browser/node_modules

@@ -1,5 +1,6 @@
 -- arg 0.3.0: an arg_ivf index on an arg column itself (one CREATE INDEX, no sketch column);
--- ORDER BY descr <~> q LIMIT k takes it and returns rows in exact SIM order.
+-- ORDER BY descr <~> q LIMIT k takes it and returns rows in exact SIM order. arg_sim_terms
+-- explains a SIM term by term.
 
 \echo Use "ALTER EXTENSION arg UPDATE TO '0.3.0'" to load this file. \quit
 
@@ -196,3 +197,14 @@ $$;
 
 COMMENT ON FUNCTION arg_knn(anyelement, name, arg, int, int, jsonb, name, name, int) IS
   'search in stages: the candidates nearest by arg_global (GiST index, or a stored descriptor column) by <#>, then with a stored arg_sketch column the shortlist nearest by arg_sketch_distance (straight from an arg_ivf index on it, without filter or descriptor), ranked exactly by <~>; returns (row, sim), best first';
+
+-- SIM explained: the graph, panorama and spectrum terms with the weights they got, their
+-- distances and their shares of SIM (which add up to arg_sim exactly, in this order), then the
+-- graph's features (the weight of each, and its part of 1 - the graph's SIM).
+CREATE FUNCTION arg_sim_terms(a arg, b arg, weights arg_weights DEFAULT 'arg')
+  RETURNS TABLE (term text, weight float8, value float8, contribution float8)
+  AS 'MODULE_PATHNAME', 'arg_sim_terms' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE
+  COST 600 ROWS 9;
+
+COMMENT ON FUNCTION arg_sim_terms(arg, arg, arg_weights) IS
+  'SIM(a, b, weights) term by term: graph, panorama, spectrum (weight, distance, share of SIM; the shares add up to arg_sim), then the graph''s features';

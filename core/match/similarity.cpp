@@ -142,7 +142,11 @@ SimilarityParts parts_in(const ArgGraph& a, const ArgGraph& b, const Weights& w,
   if (t.spectrum > 0) p.spectrum = spectrum_distance(a.spectrum, b.spectrum);
   if (t.graph > 0 || matches)
     p.graph = graph_similarity_in(a, b, w, matches, prep_a, prep_b, order);
-  p.sim = std::clamp(mix_terms(t, p.graph, p.panorama, p.spectrum), 0.0, 1.0);
+  const TermShares shares = term_shares(t, p.graph, p.panorama, p.spectrum);
+  p.share_graph = shares.graph, p.share_panorama = shares.panorama;
+  p.share_spectrum = shares.spectrum;
+  // mix_terms' sum, in its order: the shares a reader is shown add up to SIM to the bit.
+  p.sim = std::clamp(shares.graph + shares.panorama + shares.spectrum, 0.0, 1.0);
   return p;
 }
 

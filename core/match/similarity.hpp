@@ -53,11 +53,13 @@ double graph_similarity(const ArgGraph& a, const ArgGraph& b, const Weights& wei
                         std::vector<MatchPair>* matches = nullptr,
                         const MatchPrep* prep_a = nullptr, const MatchPrep* prep_b = nullptr);
 
-// The terms of arg_similarity: each distance in [0, 1] and the weight it got (0 when left out);
-// sim = sum of weight x distance over the sum of weights.
+// The terms of arg_similarity: each distance in [0, 1], the weight it got (0 when left out) and
+// its share of SIM (weight x distance over the sum of the weights: term_shares); sim is the
+// three shares added graph, panorama, spectrum (clamped to [0, 1], which they never leave).
 struct SimilarityParts {
   double graph = 0, panorama = 0, spectrum = 0;
   double w_graph = 0, w_panorama = 0, w_spectrum = 0;
+  double share_graph = 0, share_panorama = 0, share_spectrum = 0;
   double sim = 0;
 };
 SimilarityParts similarity_parts(const ArgGraph& a, const ArgGraph& b, const Weights& weights,

@@ -10,8 +10,6 @@
 
 namespace arg {
 
-namespace {}  // namespace
-
 SimilarityTerms similarity_terms(const ArgGraph& a, const ArgGraph& b, const Weights& weights,
                                  const std::vector<MatchPair>& matches) {
   Weights w = weights;
@@ -25,6 +23,7 @@ SimilarityTerms similarity_terms(const ArgGraph& a, const ArgGraph& b, const Wei
     g.second.insert(int(b.level_begin[std::size_t(p.level)]) + p.b_node);
   }
   SimilarityTerms t;
+  t.weights = w;
   for (const auto& [id, members] : groups) {
     NodeMass m, n;
     for (int i : members.first)
@@ -45,7 +44,11 @@ SimilarityTerms similarity_terms(const ArgGraph& a, const ArgGraph& b, const Wei
   for (const ArgNode& n : a.nodes) self += node_self_sim(n, w);
   for (const ArgNode& n : b.nodes) self += node_self_sim(n, w);
   const double denominator = 0.5 * self;
-  if (!(denominator > 0)) return {};
+  if (!(denominator > 0)) {
+    SimilarityTerms none;
+    none.weights = w;
+    return none;
+  }
   for (double* x : {&t.a, &t.l, &t.v, &t.cords, &t.curvature, &t.colour}) *x /= denominator;
   return t;
 }

@@ -13,6 +13,8 @@ namespace arg {
 // 1 - graph_similarity = a + l + v + cords + curvature + colour (before its clamp to [0, 1]).
 struct SimilarityTerms {
   double a = 0, l = 0, v = 0, cords = 0, curvature = 0, colour = 0;
+  // The weights the terms were summed with: the caller's, lambda_4 0 unless both have colour.
+  Weights weights;
 
   double total() const { return a + l + v + cords + curvature + colour; }
 };

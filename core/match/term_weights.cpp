@@ -17,9 +17,14 @@ TermWeights term_weights(const Weights& w, std::uint16_t flags, bool panoramas, 
   return t;
 }
 
+TermShares term_shares(const TermWeights& t, double graph, double panorama, double spectrum) {
+  const double total = t.graph + t.panorama + t.spectrum;
+  return {t.graph * graph / total, t.panorama * panorama / total, t.spectrum * spectrum / total};
+}
+
 double mix_terms(const TermWeights& t, double graph, double panorama, double spectrum) {
-  return (t.graph * graph + t.panorama * panorama + t.spectrum * spectrum) /
-         (t.graph + t.panorama + t.spectrum);
+  const TermShares s = term_shares(t, graph, panorama, spectrum);
+  return s.graph + s.panorama + s.spectrum;
 }
 
 }  // namespace arg

@@ -25,7 +25,16 @@ struct TermWeights {
 //   weighs 1.
 TermWeights term_weights(const Weights& w, std::uint16_t flags, bool panoramas, bool spectra);
 
-// The weighted mean of the three distances (terms of weight 0 add nothing; not clamped).
+// Each term's share of the mix: its weight times its distance over the sum of the weights (0
+// for a term of weight 0).
+struct TermShares {
+  double graph = 0, panorama = 0, spectrum = 0;
+};
+TermShares term_shares(const TermWeights& t, double graph, double panorama, double spectrum);
+
+// The weighted mean of the three distances: the sum of term_shares, added graph, panorama,
+// spectrum in that order, so that the shares shown to a reader (arg_sim_terms) add up to it
+// exactly in double arithmetic (not clamped).
 double mix_terms(const TermWeights& t, double graph, double panorama, double spectrum);
 
 }  // namespace arg

@@ -80,6 +80,8 @@ SurfaceBuffer rasterise_mesh(Image& image, const Mesh& mesh, const std::vector<d
   for (auto& n : face_normal) n = n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : n;
 
   const int steps = int(paint.ramp.size());
+  const bool own = paint.own_colours && mesh.has_colour();
+  auto channel = [](float c) { return std::uint8_t(std::lround(std::clamp(c, 0.0f, 1.0f) * 255)); };
   for (std::size_t f = 0; f < nf; ++f) {
     std::size_t id[3] = {corner(f, 0), corner(f, 1), corner(f, 2)};
     Eigen::Vector2d p[3] = {screen[id[0]].head<2>(), screen[id[1]].head<2>(),
@@ -118,7 +120,10 @@ SurfaceBuffer rasterise_mesh(Image& image, const Mesh& mesh, const std::vector<d
             std::clamp(w[0] * value[id[0]] + w[1] * value[id[1]] + w[2] * value[id[2]], 0.0, 1.0);
         out.value[at] = float(t);
         Rgb base = paint.ramp[std::size_t(std::lround(t * (steps - 1)))];
-        if (paint.bands > 0 && std::min(int(t * paint.bands), paint.bands - 1) % 2)
+        if (own)
+          base = {channel(mesh.C(Eigen::Index(f), 0)), channel(mesh.C(Eigen::Index(f), 1)),
+                  channel(mesh.C(Eigen::Index(f), 2))};
+        else if (paint.bands > 0 && std::min(int(t * paint.bands), paint.bands - 1) % 2)
           base = scaled(base, 0.8);
         const Eigen::Vector3d n = shading == Shading::Smooth
                                       ? Eigen::Vector3d(w[0] * normal[id[0]] +

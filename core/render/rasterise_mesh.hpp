@@ -29,6 +29,9 @@ struct SurfacePaint {
   // When > 0, values in [k / bands, (k + 1) / bands) with odd k are drawn a little darker, so
   // the intervals that the Reeb graph slices show as stripes.
   int bands = 0;
+  // Each face painted with its own colour (the mesh's C) instead of the ramp, without bands,
+  // when the mesh has colours; the ramp otherwise.
+  bool own_colours = false;
 };
 
 // A ramp of `steps` colours sampled from `colour_of(t)` at t = k / (steps - 1).

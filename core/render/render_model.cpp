@@ -34,8 +34,10 @@ RenderedModel render_model(const NodePositions& model, const RenderOptions& opti
   fine.scale *= ss, fine.origin_x *= ss, fine.origin_y *= ss;
 
   SurfacePaint paint;
-  paint.ramp = options.clay ? std::vector<Rgb>{{214, 212, 206}} : sample_ramp(mu_colour);
-  paint.bands = 1 << options.level;
+  paint.ramp = options.clay || options.own_colours ? std::vector<Rgb>{{214, 212, 206}}
+                                                   : sample_ramp(mu_colour);
+  paint.bands = options.own_colours ? 0 : 1 << options.level;
+  paint.own_colours = options.own_colours;
   Image big = make_canvas(options.width * ss, options.height * ss, kRenderBackground);
   const SurfaceBuffer seen =
       rasterise_mesh(big, model.mesh, model.mu, fine, options.shading, paint);

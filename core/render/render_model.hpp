@@ -21,6 +21,9 @@ struct RenderOptions {
   // A neutral grey surface instead of mu colours, for pictures whose node colours carry the
   // meaning (matched pairs); the mu intervals still show as stripes.
   bool clay = false;
+  // The surface in its own colours (per face, where the mesh has them; clay otherwise), without
+  // the mu stripes: the object as it looks.
+  bool own_colours = false;
   bool legend = true;
   bool graph = true;
   std::string title;    // drawn at the top left when not empty

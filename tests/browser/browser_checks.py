@@ -4,9 +4,11 @@ from __future__ import annotations
 
 import argparse
 import io
+import json
 import re
 import sys
 import tempfile
+import time
 import urllib.error
 import urllib.request
 import uuid
@@ -16,6 +18,7 @@ from typing import Any, Dict, List, Optional, Tuple
 import psycopg
 from PIL import Image, ImageStat
 from selenium.common.exceptions import WebDriverException
+from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.remote.webdriver import WebDriver
 from selenium.webdriver.remote.webelement import WebElement
@@ -110,6 +113,44 @@ class Browser:
                 return response.status, response.headers.get("Content-Type", ""), response.read().decode()
         except urllib.error.HTTPError as error:
             return error.code, error.headers.get("Content-Type", ""), error.read().decode()
+
+    def view_ready(self, model: Dict[str, Any], query: str = "") -> WebElement:
+        """Opens an object page and waits for its 3D view to be drawn; fails with the page's message."""
+        self.open(f"object/{model['id']}{query}", "#view3d")
+        self.wait(lambda d: d.find_element(By.ID, "view3d").get_attribute("data-state") != "loading")
+        box = self.d.find_element(By.ID, "view3d")
+        if box.get_attribute("data-state") != "ready":
+            raise tap.Failed(f"the 3D view of {model['model_id']} did not draw: "
+                             f"{self.d.find_element(By.ID, 'view-message').text!r}")
+        return box.find_element(By.TAG_NAME, "canvas")
+
+    @staticmethod
+    def picture(element: WebElement) -> Image.Image:
+        return Image.open(io.BytesIO(element.screenshot_as_png)).convert("RGB")
+
+    @staticmethod
+    def changed(before: Image.Image, after: Image.Image) -> float:
+        """The share of pixels that differ between two pictures of one size."""
+        diff = [a != b for a, b in zip(before.getdata(), after.getdata())]
+        return sum(diff) / max(len(diff), 1)
+
+    def redraw(self, element: WebElement, before: Image.Image, what: str) -> Image.Image:
+        """Waits (a few frames) until the canvas differs from `before`; fails naming `what`."""
+        deadline = time.monotonic() + 10
+        while True:
+            after = self.picture(element)
+            share = self.changed(before, after)
+            if share > 0.01:
+                return after
+            if time.monotonic() > deadline:
+                raise tap.Failed(f"{what}: {share:.2%} of the 3D view's pixels changed")
+            time.sleep(0.1)
+
+    def nodes_at(self, model: Dict[str, Any], level: int) -> int:
+        with psycopg.connect() as conn:
+            row = conn.execute("SELECT count(*) FROM objects o, arg_nodes(o.descr) n "
+                               "WHERE o.id = %s AND n.level = %s", (model["id"], level)).fetchone()
+        return int(row[0]) if row else 0
 
     # --- the checks ---------------------------------------------------------------------------
 
@@ -248,6 +289,148 @@ class Browser:
         expect(status == 404 and "no model 999999" in page and "Traceback" not in page,
                f"HTTP {status} for an unknown object: {re.sub(r'<[^>]+>', ' ', page)[:200]!r}")
 
+    def view_renders_and_turns(self) -> None:
+        model = self.models[0]
+        canvas = self.view_ready(model)
+        before = self.picture(canvas)
+        grey = ImageStat.Stat(before.convert("L"))
+        colours = before.getcolors(maxcolors=1 << 24) or []
+        expect(grey.stddev[0] > 10 and len(colours) > 50,
+               f"the 3D view looks blank: grey level spread {grey.stddev[0]:.1f}, {len(colours)} colours")
+        ActionChains(self.d).move_to_element(canvas).click_and_hold().move_by_offset(90, 40) \
+            .release().perform()
+        self.redraw(canvas, before, "after a drag")
+
+    def view_graph_toggle(self) -> None:
+        model = self.models[0]
+        canvas = self.view_ready(model)
+        box = self.d.find_element(By.ID, "view3d")
+        level = int(Select(self.d.find_element(By.ID, "view-level")).first_selected_option.text)
+        plain = self.picture(canvas)
+        self.d.find_element(By.ID, "view-graph").click()
+        expected = self.nodes_at(model, level)
+        shown = box.get_attribute("data-nodes")
+        expect(expected > 0 and shown == str(expected),
+               f"the graph shows {shown} nodes at level {level}; the ARG has {expected}")
+        with_graph = self.redraw(canvas, plain, "after showing the graph")
+        Select(self.d.find_element(By.ID, "view-colour")).select_by_value("mu")
+        expect(box.get_attribute("data-mode") == "mu", "the surface is not coloured by mu")
+        self.redraw(canvas, with_graph, "after colouring by mu")
+        Select(self.d.find_element(By.ID, "view-level")).select_by_value("1")
+        fewer = self.nodes_at(model, 1)
+        expect(box.get_attribute("data-nodes") == str(fewer),
+               f"level 1: the graph shows {box.get_attribute('data-nodes')} nodes, the ARG has {fewer}")
+
+    def pair_terms_sum_to_sim(self) -> None:
+        model = self.models[len(self.models) // 2]
+        self.open(f"object/{model['id']}/similar", "#ranked")
+        second = self.d.find_elements(By.CSS_SELECTOR, "#ranked tr.result")[1]
+        ranked_sim = float(second.get_attribute("data-sim"))
+        self.click_to(second.find_element(By.CSS_SELECTOR, "a.why"), "#terms")
+        shown = self.d.find_element(By.ID, "pair-sim")
+        sim = float(shown.get_attribute("data-sim"))
+        terms = self.d.find_elements(By.CSS_SELECTOR, "#terms tr.term")
+        names = [t.get_attribute("data-term") for t in terms]
+        expect(names == ["graph", "panorama", "spectrum"], f"the terms shown are {names}")
+        total = 0.0
+        for t in terms:  # added in the order shown, as SIM adds them
+            total += float(t.get_attribute("data-contribution"))
+        expect(total == sim, f"the terms add up to {total!r}, the SIM shown is {sim!r}")
+        expect(sim == ranked_sim, f"the pair's SIM {sim!r} is not the ranking's {ranked_sim!r}")
+        expect(shown.text == f"{sim:.6f}", f"the SIM reads {shown.text!r}")
+        weights = [float(t.get_attribute("data-weight")) for t in terms]
+        expect(weights[0] > 0 and all(w >= 0 for w in weights), f"weights {weights}")
+        features = self.d.find_elements(By.CSS_SELECTOR, "#features tr.feature")
+        expect(len(features) == 6, f"{len(features)} features of the graph shown, not 6")
+        expect(self.images_loaded("#pair-picture") == 1, "the picture of the matched nodes did not load")
+
+    def presets_change_the_order(self) -> None:
+        model = self.models[len(self.models) // 2]
+        rankings = {}
+        for look in ("shape", "shape-colour", "colour"):
+            self.open(f"object/{model['id']}/similar?k=all&look={look}", "#ranked")
+            chosen = Select(self.d.find_element(By.ID, "look")).first_selected_option.get_attribute("value")
+            expect(chosen == look, f"the page's appearance is {chosen}, not {look}")
+            rankings[look] = self.expect_query_first(model)
+            sims = [r[1] for r in rankings[look]]
+            expect(sims == sorted(sims), f"{look}: SIMs not ascending")
+        orders = {look: [r[0] for r in rows] for look, rows in rankings.items()}
+        expect(orders["shape"] != orders["colour"] or orders["shape"] != orders["shape-colour"],
+               f"the three appearances rank alike: {orders['shape'][:6]}")
+        # Each SIM shown is the server's under that preset.
+        second, shown, _ = rankings["colour"][1]
+        with psycopg.connect() as conn:
+            sim = conn.execute("SELECT arg_sim(a.descr, b.descr, 'colour') FROM objects a, objects b "
+                               "WHERE a.model_id = %s AND b.model_id = %s", (second, model["model_id"])).fetchone()
+        expect(sim is not None and shown == sim[0], f"colour: SIM shown {shown!r}, the server's {sim}")
+
+    def part_click_finds_parts(self) -> None:
+        model = self.models[0]
+        canvas = self.view_ready(model)
+        ActionChains(self.d).move_to_element(canvas).click().perform()
+        box = self.d.find_element(By.ID, "view3d")
+        picked = int(box.get_attribute("data-picked"))
+        expect(picked >= 0, "a click in the middle of the 3D view picked no node")
+        # Node 1's disc, found by its colour (viewer.js's second node colour), picks node 1.
+        before = self.picture(canvas)
+        self.d.find_element(By.ID, "view-graph").click()
+        shot = self.redraw(canvas, before, "after showing the graph")
+        width, height = shot.size
+        disc = [(x, y) for y in range(0, height, 2) for x in range(0, width, 2)
+                if sum(abs(a - b) for a, b in zip(shot.getpixel((x, y)), (255, 127, 14))) < 20]
+        expect(len(disc) > 10, f"node 1's disc not found in the 3D view ({len(disc)} pixels)")
+        x, y = sum(p[0] for p in disc) // len(disc), sum(p[1] for p in disc) // len(disc)
+        ActionChains(self.d).move_to_element_with_offset(canvas, x - width // 2, y - height // 2) \
+            .click().perform()
+        expect(box.get_attribute("data-picked") == "1",
+               f"a click on node 1's disc picked node {box.get_attribute('data-picked')}")
+        link = self.d.find_element(By.ID, "part-link")
+        expect(link.is_displayed(), "no link to search by the picked part")
+        self.click_to(link, "#parts")
+        rows = self.d.find_elements(By.CSS_SELECTOR, "#parts tr.result")
+        expect(len(rows) > 0, "no model has a part like the one picked")
+        scores = [float(r.get_attribute("data-score")) for r in rows]
+        expect(scores == sorted(scores) and all(0 <= x <= 1 for x in scores), f"scores {scores}")
+        expect(self.images_loaded("#parts img.part-graph") == len(rows), "a part's graph did not load")
+        first = rows[0]
+        src = first.find_element(By.CSS_SELECTOR, "img.part-graph").get_attribute("src")
+        status, _, svg = self.http("GET", src.split("/", 3)[3])
+        expect(status == 200 and svg.count('class="marked"') == 1,
+               f"the first result's graph does not ring its part (HTTP {status})")
+
+    def bad_view_input_is_clear(self) -> None:
+        status, kind, body = self.http("GET", "object/999999/view.json")
+        expect(status == 404 and kind.startswith("application/json") and
+               "no model 999999" in json.loads(body).get("error", ""),
+               f"view.json of an unknown object: HTTP {status} {body[:120]!r}")
+        model = self.models[0]
+        status, _, page = self.http("GET", f"object/{model['id']}/part?level=2&node=9999")
+        expect(status == 404 and "has no node 9999 at level 2" in page and "Traceback" not in page,
+               f"an unknown node: HTTP {status}: {re.sub(r'<[^>]+>', ' ', page)[:200]!r}")
+        status, _, page = self.http("GET", f"pair/{model['id']}/999999")
+        expect(status == 404 and "no model 999999" in page, f"a pair with an unknown object: HTTP {status}")
+        # The largest model, over the limit run_browser_tests.sh sets: too large to display.
+        with psycopg.connect() as conn:
+            large = conn.execute("SELECT id, (arg_info(descr)->>'triangles')::int FROM objects "
+                                 "ORDER BY 2 DESC, id LIMIT 1").fetchone()
+        assert large is not None
+        self.open(f"object/{large[0]}", "#title")
+        self.wait(lambda d: d.find_element(By.ID, "view-message").is_displayed())
+        text = self.d.find_element(By.ID, "view-message").text
+        expect(f"too large to display in 3D: {large[1]:,} triangles" in text,
+               f"a model too large to display: the page says {text!r}")
+        # An object without a mesh: its page says so where the view would be.
+        with psycopg.connect(autocommit=True) as conn:
+            conn.execute("INSERT INTO objects (id, model_id, title) VALUES (999998, 'no-mesh', 'No mesh')")
+            try:
+                self.open("object/999998", "#title")
+                self.wait(lambda d: d.find_element(By.ID, "view-message").is_displayed())
+                text = self.d.find_element(By.ID, "view-message").text
+                expect("has no mesh" in text and "Traceback" not in self.d.page_source,
+                       f"an object without a mesh: the page says {text!r}")
+            finally:
+                conn.execute("DELETE FROM objects WHERE id = 999998")
+
     def listens_on_localhost_only(self) -> None:
         port = int(re.search(r":(\d+)/", self.url).group(1))  # type: ignore[union-attr]
         addresses = []
@@ -272,6 +455,14 @@ class Browser:
             ("a bad upload shows the server's message and SQLSTATE, no traceback", self.bad_upload_shows_server_message),
             ("a bad upload is answered with HTTP 4xx", self.bad_upload_is_4xx),
             ("an unknown object is a 404 page", self.unknown_object_is_404),
+            ("the 3D view draws the object and turns when dragged", self.view_renders_and_turns),
+            ("the 3D view's graph toggle shows the level's nodes, mu colours the surface", self.view_graph_toggle),
+            ("a pair page shows SIM's terms with their weights, adding up to the SIM shown", self.pair_terms_sum_to_sim),
+            ("shape only, shape and colour, colour first: the order changes", self.presets_change_the_order),
+            ("a click on the surface or a node's disc picks a node; its part search rings each match",
+             self.part_click_finds_parts),
+            ("an unknown object, node or pair, no mesh or too many triangles: a clear message",
+             self.bad_view_input_is_clear),
             ("the browser listens on 127.0.0.1 only", self.listens_on_localhost_only),
         ]
 

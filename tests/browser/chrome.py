@@ -25,6 +25,8 @@ def start(width: int = 1280, height: int = 1000, timeout: float = 90) -> webdriv
                  "--no-sandbox",
                  # Containers often have a small /dev/shm, which crashes tabs.
                  "--disable-dev-shm-usage", "--disable-gpu", "--disable-extensions",
+                 # WebGL (the 3D view) on the CPU: no GPU here, and newer Chromium wants it asked for.
+                 "--enable-unsafe-swiftshader",
                  "--no-first-run", "--hide-scrollbars", "--force-device-scale-factor=1",
                  f"--window-size={width},{height}", f"--user-data-dir={profile}"):
         options.add_argument(flag)

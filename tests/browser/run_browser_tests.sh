@@ -59,17 +59,21 @@ load_catalogue() {
 
 every_thumbnail() {
   "$python" tools/browser/thumbnails.py --argtool "$build/argtool" &&
-    [[ $(psql -X -tAc "SELECT count(*) FROM objects WHERE thumbnail IS NULL
-                        OR substr(thumbnail, 1, 8) <> '\\x89504e470d0a1a0a'::bytea") -eq 0 ]]
+    [[ $(psql -X -tAc "SELECT count(*) FROM objects WHERE thumbnail IS NULL OR thumbnail_mu IS NULL
+                        OR substr(thumbnail, 1, 8) <> '\\x89504e470d0a1a0a'::bytea
+                        OR substr(thumbnail_mu, 1, 8) <> '\\x89504e470d0a1a0a'::bytea") -eq 0 ]]
 }
 
 start_browser() {
-  tools/browser/server.sh stop "$work" && tools/browser/server.sh start "$work"
+  # The largest sample model stands for one too large to display in 3D.
+  ARG_VIEW_MAX_TRIANGLES=$(psql -X -tAc "SELECT max((arg_info(descr)->>'triangles')::int) - 1 FROM objects") &&
+    export ARG_VIEW_MAX_TRIANGLES &&
+    tools/browser/server.sh stop "$work" && tools/browser/server.sh start "$work"
 }
 
 step "a database for the browser's catalogue" make_database
 step "the sample catalogue loads as the demo loads it (tools/demo/load.sql)" load_catalogue
-step "every model gets a PNG thumbnail in the table (argtool render)" every_thumbnail
+step "every model gets PNG thumbnails in the table, own colours and mu (argtool render)" every_thumbnail
 step "the browser starts beside the cluster and answers" start_browser
 
 url=$(tools/browser/server.sh url "$work")

@@ -1,7 +1,7 @@
 -- The SQL contract of the extension: its objects, their signatures and their markings.
 BEGIN;
 CREATE EXTENSION IF NOT EXISTS arg CASCADE;
-SELECT plan(196);
+SELECT plan(203);
 
 SELECT has_extension('arg', 'the arg extension is installed');
 SELECT has_type('arg', 'type arg exists');
@@ -86,6 +86,9 @@ INSERT INTO surface VALUES
   ('arg_build(bytea,bytea,text)', 'arg', true),
   ('arg_sim(arg,arg,arg_weights)', 'double precision', true),
   ('arg_distance(arg,arg)', 'double precision', true),
+  ('arg_sim_terms(arg,arg,arg_weights)',
+   'TABLE(term text, weight double precision, value double precision, contribution double precision)',
+   true),
   ('arg_matches(arg,arg,arg_weights)',
    'TABLE(level integer, a_node integer, b_node integer, match_group integer, loss double precision, sim double precision)',
    true),
@@ -179,6 +182,26 @@ FROM cup;
 SELECT is(arg_hash(arg_build(mesh)), (arg_hash_extended(arg_build(mesh), 0) & 4294967295)::bit(32)::int,
           'with seed 0, arg_hash_extended agrees with arg_hash (as hash operator classes require)')
 FROM cup;
+
+-- arg_sim_terms explains SIM: the shares of graph, panorama and spectrum, added in that order
+-- (as sum() adds the rows), are arg_sim to the bit, for every pair of a few models (one with
+-- colour), itself included, and every preset; the graph's features add up to 1 - its SIM.
+CREATE TEMP TABLE explained AS
+SELECT m.name, arg_build(arg_generate_model(m.name, 0, 16)) AS descr
+FROM unnest(ARRAY['cup', 'vase', 'human', 'table']) AS m(name);
+CREATE TEMP TABLE term_sums AS
+SELECT a.name AS a, b.name AS b, p AS preset, arg_sim(a.descr, b.descr, p::arg_weights) AS sim,
+       (SELECT sum(contribution) FROM arg_sim_terms(a.descr, b.descr, p::arg_weights)) AS total,
+       (SELECT value FROM arg_sim_terms(a.descr, b.descr, p::arg_weights) WHERE term = 'graph') AS graph,
+       (SELECT sum(value) FROM arg_sim_terms(a.descr, b.descr, p::arg_weights)
+        WHERE term LIKE 'graph.%') AS features
+FROM explained a, explained b, unnest(ARRAY['arg', 'mrg', 'graph', 'shape', 'colour']) AS p;
+SELECT is((SELECT count(*)::int FROM term_sums WHERE total IS DISTINCT FROM sim), 0,
+          'arg_sim_terms: the contributions add up to arg_sim exactly, every pair and preset');
+SELECT is((SELECT count(*)::int FROM term_sums WHERE abs(1 - features - graph) > 1e-9 AND graph > 0), 0,
+          'arg_sim_terms: the graph''s features add up to 1 - the graph''s SIM');
+SELECT is((SELECT count(*)::int FROM term_sums WHERE a <> b AND sim > 0), 4 * 3 * 5,
+          'arg_sim_terms was checked on distinct models with SIM above 0');
 
 SELECT * FROM finish();
 ROLLBACK;

@@ -212,6 +212,30 @@ TEST(Render, PictureIsNotBlank) {
   EXPECT_GT(s.foreground, 0.12);
 }
 
+TEST(Render, OwnColoursPaintEachFaceItsColourWithoutTheRamp) {
+  // A red model: lit red is (r, s, s) with s the highlight, and the white background keeps
+  // g = b where edges are averaged; mu's ramp would give pixels with g != b.
+  NodePositions red = model("cup", 0).positions;
+  red.mesh.C.setZero(red.mesh.F.rows(), 3);
+  red.mesh.C.col(0).setOnes();
+  RenderOptions o;
+  o.graph = o.legend = false;
+  o.own_colours = true;
+  const Image own = render_model(red, o).image;
+  std::size_t reddish = 0, unequal = 0;
+  for (std::size_t i = 0; i < own.rgb.size(); i += 3) {
+    if (own.rgb[i + 1] != own.rgb[i + 2]) ++unequal;
+    if (own.rgb[i] > own.rgb[i + 1] + 60) ++reddish;
+  }
+  EXPECT_EQ(unequal, 0u);
+  EXPECT_GT(double(reddish) / double(own.rgb.size() / 3), 0.1);
+  o.own_colours = false;
+  const Image mu = render_model(red, o).image;
+  unequal = 0;
+  for (std::size_t i = 0; i < mu.rgb.size(); i += 3) unequal += mu.rgb[i + 1] != mu.rgb[i + 2];
+  EXPECT_GT(unequal, 1000u) << "mu's colours are not the model's";
+}
+
 TEST(Render, OverlayDrawsEveryNodeOfTheLevel) {
   for (const char* label : {"human", "fourleg", "cup"}) {
     const Model& m = model(label, 1);

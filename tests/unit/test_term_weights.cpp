@@ -89,5 +89,23 @@ TEST(TermWeights, TheSketchDistanceWeighsTheTermsAsSim) {
       }
 }
 
+TEST(TermWeights, TheSharesAddUpToSimToTheBit) {
+  const std::vector<ArgGraph> g = kinds_of_models();
+  for (const Weights& w : weight_choices())
+    for (std::size_t i = 0; i < g.size(); ++i)
+      for (std::size_t j = 0; j < g.size(); ++j) {
+        const SimilarityParts p = similarity_parts(g[i], g[j], w);
+        const TermWeights t{p.w_graph, p.w_panorama, p.w_spectrum};
+        const TermShares s = term_shares(t, p.graph, p.panorama, p.spectrum);
+        EXPECT_EQ(s.graph, p.share_graph);
+        EXPECT_EQ(s.panorama, p.share_panorama);
+        EXPECT_EQ(s.spectrum, p.share_spectrum);
+        // In the order arg_sim_terms lists them, as SQL's sum() adds them.
+        EXPECT_EQ(p.share_graph + p.share_panorama + p.share_spectrum,
+                  arg_similarity(g[i], g[j], w))
+            << i << " against " << j << " under " << format_weights(w);
+      }
+}
+
 }  // namespace
 }  // namespace arg

@@ -15,7 +15,8 @@
 namespace {
 
 struct RenderArgs {
-  std::string mesh, output, view = "front", shading = "smooth", title;
+  std::string mesh, output, view = "front", shading = "smooth", title, surface = "mu";
+  std::string colours_output;  // also the surface in its own colours, without the graph
   int level = 2, size = 512;
   bool no_legend = false, no_graph = false;
   arg::BuildOptions options;
@@ -39,7 +40,8 @@ int run_render(const RenderArgs& a) {
   ro.level = a.level;
   ro.view = arg::parse_view(a.view);
   ro.shading = arg::parse_shading(a.shading);
-  ro.legend = !a.no_legend;
+  ro.own_colours = a.surface == "colours";
+  ro.legend = !a.no_legend && !ro.own_colours;  // a legend of mu explains mu colours only
   ro.graph = !a.no_graph;
   if (a.level > a.options.levels)
     throw std::runtime_error("--level " + std::to_string(a.level) + " is finer than --levels " +
@@ -52,6 +54,12 @@ int run_render(const RenderArgs& a) {
                              : a.title;
   const arg::RenderedModel picture = arg::render_model(model, ro);
   argtool::write_png(picture.image, a.output);
+  if (!a.colours_output.empty()) {
+    // From the same surface: mu and the graph are the costly part, computed once for both.
+    arg::RenderOptions plain = ro;
+    plain.own_colours = true, plain.legend = false, plain.graph = false;
+    argtool::write_png(arg::render_model(model, plain).image, a.colours_output);
+  }
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   std::printf("wrote %s (%dx%d, level %d: %zu nodes drawn, %.0f ms)\n", a.output.c_str(),
@@ -83,6 +91,13 @@ const bool registered = argtool::register_command(
       app.add_option("--title", a->title, "caption (default: file name, level, node count)");
       app.add_flag("--no-legend", a->no_legend, "leave out the colour legend");
       app.add_flag("--no-graph", a->no_graph, "draw the surface only");
+      app.add_option("--surface", a->surface,
+                     "mu (coloured by mu, striped by the level's intervals) or colours (the "
+                     "model's own colours, clay where it has none)")
+          ->check(CLI::IsMember({"mu", "colours"}))
+          ->capture_default_str();
+      app.add_option("--colours-output", a->colours_output,
+                     "a second PNG from the same surface: its own colours, no graph or legend");
       argtool::add_build_flags(app, a->options);
       return [a] { return run_render(*a); };
     });

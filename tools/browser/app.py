@@ -1,4 +1,4 @@
-"""The catalogue browser's web pages (FastAPI): the grid, an object, "more like this", search by upload."""
+"""The catalogue browser's web pages (FastAPI): the grid, an object in 3D, "more like this", a pair, search by upload."""
 
 from __future__ import annotations
 
@@ -7,14 +7,17 @@ from typing import Any, Dict, List, Mapping
 
 import psycopg
 from fastapi import FastAPI, Request
-from fastapi.responses import FileResponse, HTMLResponse, PlainTextResponse, Response
+from fastapi.middleware.gzip import GZipMiddleware
+from fastapi.responses import FileResponse, HTMLResponse, JSONResponse, PlainTextResponse, Response
 from fastapi.templating import Jinja2Templates
 from starlette.concurrency import run_in_threadpool
 from starlette.datastructures import UploadFile
 
 import catalogue
 import errors
+import pair_picture
 import pgarg
+import viewdata
 
 HERE = Path(__file__).resolve().parent
 templates = Jinja2Templates(directory=str(HERE / "templates"))
@@ -27,6 +30,8 @@ MAX_UPLOAD_BYTES = 64 * 1024 * 1024
 
 app = FastAPI(title="arg catalogue browser", docs_url=None, redoc_url=None, openapi_url=None)
 errors.install(app, templates)
+# The 3D view's JSON is mostly digits: compressed it is a quarter of its size.
+app.add_middleware(GZipMiddleware, minimum_size=4096)
 
 
 def page(request: Request, name: str, status_code: int = 200, **values: Any) -> HTMLResponse:
@@ -68,6 +73,30 @@ def style() -> FileResponse:
     return FileResponse(HERE / "static" / "style.css", media_type="text/css")
 
 
+# The browser's own scripts, and three.js as npm installed it (tools/browser/install_js.sh): only
+# these files, by name, so that no path from a request reaches the file system.
+THREE = HERE / "node_modules" / "three"
+SCRIPTS = {
+    "viewer.js": HERE / "static" / "viewer.js",
+    "three/three.module.min.js": THREE / "build" / "three.module.min.js",
+    "three/three.core.min.js": THREE / "build" / "three.core.min.js",
+    "three/addons/controls/OrbitControls.js": THREE / "examples" / "jsm" / "controls" / "OrbitControls.js",
+}
+
+
+def three_installed() -> bool:
+    return all(path.is_file() for path in SCRIPTS.values())
+
+
+@app.get("/js/{name:path}")
+def script(name: str) -> FileResponse:
+    path = SCRIPTS.get(name)
+    if path is None or not path.is_file():
+        raise errors.NotFound(f"no script {name}" + ("" if three_installed() else
+                                                   " (three.js is not installed: run make deps)"))
+    return FileResponse(path, media_type="text/javascript", headers={"Cache-Control": "max-age=3600"})
+
+
 @app.get("/", response_class=HTMLResponse)
 def grid(request: Request) -> HTMLResponse:
     params = dict(request.query_params)
@@ -78,31 +107,55 @@ def grid(request: Request) -> HTMLResponse:
 
 
 @app.get("/thumbnail/{model_id}.png")
-def thumbnail(model_id: int) -> Response:
+def thumbnail(model_id: int, view: str = "colours") -> Response:
     with catalogue.connect() as conn:
-        png = catalogue.thumbnail(conn, model_id)
+        png = catalogue.thumbnail(conn, model_id, mu=view == "mu")
     if png is None:
         raise errors.NotFound(f"model {model_id} has no thumbnail")
     return Response(png, media_type="image/png", headers={"Cache-Control": "max-age=3600"})
 
 
 @app.get("/object/{model_id}", response_class=HTMLResponse)
-def object_page(request: Request, model_id: int, level: int = 2) -> HTMLResponse:
+def object_page(request: Request, model_id: int, level: int = 2, part: int = -1) -> HTMLResponse:
     with catalogue.connect() as conn:
         row = catalogue.model(conn, model_id)
         if row is None:
             raise errors.NotFound(f"there is no model {model_id} in the catalogue")
-        level = max(0, min(level, row["levels"] - 1))
-        return page(request, "object.html", model=row, level=level, levels=range(row["levels"]),
-                    choices=catalogue.filter_choices(conn))
+        levels = row["levels"] or 0  # none: no mesh, so no ARG
+        level = max(0, min(level, levels - 1))
+        return page(request, "object.html", model=row, level=level, levels=range(levels),
+                    choices=catalogue.filter_choices(conn), three=three_installed(),
+                    looks=catalogue.APPEARANCE_LABELS, look=catalogue.DEFAULT_APPEARANCE, part=part)
+
+
+def view_json(model_id: int) -> bytes:
+    with catalogue.connect() as conn:
+        row = catalogue.stored_mesh(conn, model_id)
+    if row is None:
+        raise viewdata.ViewUnavailable(f"there is no model {model_id} in the catalogue", 404)
+    return viewdata.convert(model_id, row["file"], row["mesh"], row["triangles"])
+
+
+@app.get("/object/{model_id}/view.json")
+async def view(model_id: int) -> Response:
+    """The 3D view's data (argtool view-data); a reason as {"error": ...} when there is none."""
+    try:
+        data = await run_in_threadpool(view_json, model_id)
+    except viewdata.ViewUnavailable as why:
+        return JSONResponse({"error": why.message}, status_code=why.status_code)
+    return Response(data, media_type="application/json", headers={"Cache-Control": "max-age=3600"})
 
 
 @app.get("/object/{model_id}/graph.svg")
-def graph(model_id: int, level: int = 2) -> Response:
+def graph(model_id: int, level: int = 2, mark: int = -1) -> Response:
     with catalogue.connect() as conn:
         svg = catalogue.graph_svg(conn, model_id, level)
     if svg is None:
         raise errors.NotFound(f"there is no model {model_id} in the catalogue")
+    if mark >= 0:
+        # A matching part, ringed: arg_svg titles each node's disc "level L node N: ...".
+        svg = svg.replace(f'"><title>level {level} node {mark}: ',
+                          f'" stroke="#d00" stroke-width="4" class="marked"><title>level {level} node {mark}: ', 1)
     # arg_svg has no scripts or references; the policy says so to the browser as well.
     return Response(svg, media_type="image/svg+xml",
                     headers={"Content-Security-Policy": "default-src 'none'; style-src 'unsafe-inline'"})
@@ -114,10 +167,82 @@ def similar(request: Request, model_id: int) -> HTMLResponse:
         query = catalogue.model(conn, model_id)
         if query is None:
             raise errors.NotFound(f"there is no model {model_id} in the catalogue")
-        form = ranking_form(conn, dict(request.query_params))
-        rows = catalogue.ranked(conn, query["descr"], form["k"], form["filters"])
+        if query["descr"] is None:
+            raise errors.NotFound(f"model {model_id} has no mesh, so nothing to rank by")
+        params = dict(request.query_params)
+        form = ranking_form(conn, params)
+        look = catalogue.appearance(params.get("look"))
+        rows = catalogue.ranked_with(conn, query["descr"], form["k"], form["filters"], look)
         return page(request, "ranked.html", query=query, rows=rows, action=f"/object/{model_id}/similar",
-                    **form)
+                    look=look, looks=catalogue.APPEARANCE_LABELS, **form)
+
+
+def pair_rows(conn: psycopg.Connection[Any], a_id: int, b_id: int) -> "tuple[Dict[str, Any], Dict[str, Any]]":
+    a, b = catalogue.model(conn, a_id), catalogue.model(conn, b_id)
+    for model_id, row in ((a_id, a), (b_id, b)):
+        if row is None:
+            raise errors.NotFound(f"there is no model {model_id} in the catalogue")
+        if row["descr"] is None:
+            raise errors.NotFound(f"model {model_id} has no mesh, so nothing to compare")
+    return a, b  # type: ignore[return-value]
+
+
+@app.get("/pair/{a_id}/{b_id}", response_class=HTMLResponse)
+def pair(request: Request, a_id: int, b_id: int, look: str = catalogue.DEFAULT_APPEARANCE,
+         level: int = 2) -> HTMLResponse:
+    """Why two objects are close: both side by side, matched nodes linked, SIM term by term."""
+    look = catalogue.appearance(look)
+    weights = catalogue.APPEARANCE[look]
+    with catalogue.connect() as conn:
+        a, b = pair_rows(conn, a_id, b_id)
+        levels = min(a["levels"], b["levels"])
+        level = max(0, min(level, levels - 1))
+        sim, terms = catalogue.sim_terms(conn, a["descr"], b["descr"], weights)
+        matches = catalogue.best_matches(conn, a["descr"], b["descr"], weights, level)
+        return page(request, "pair.html", a=a, b=b, sim=sim, terms=terms, weights=weights, look=look,
+                    looks=catalogue.APPEARANCE_LABELS, level=level, levels=range(levels), matches=matches)
+
+
+def pair_png(a_id: int, b_id: int, weights: str, level: int) -> bytes:
+    with catalogue.connect() as conn:
+        a, b = catalogue.stored_mesh(conn, a_id), catalogue.stored_mesh(conn, b_id)
+    for model_id, row in ((a_id, a), (b_id, b)):
+        if row is None:
+            raise viewdata.ViewUnavailable(f"there is no model {model_id} in the catalogue", 404)
+        if row["mesh"] is None:
+            raise viewdata.ViewUnavailable(f"model {model_id} has no mesh stored", 404)
+    assert a is not None and b is not None
+    return pair_picture.render((a_id, a["file"], a["mesh"]), (b_id, b["file"], b["mesh"]), weights, level)
+
+
+@app.get("/pair/{a_id}/{b_id}/matches.png")
+async def pair_picture_png(a_id: int, b_id: int, look: str = catalogue.DEFAULT_APPEARANCE,
+                           level: int = 2) -> Response:
+    weights = catalogue.APPEARANCE[catalogue.appearance(look)]
+    try:
+        png = await run_in_threadpool(pair_png, a_id, b_id, weights, level)
+    except viewdata.ViewUnavailable as why:
+        raise errors.PageError(why.message, status_code=why.status_code) from None
+    return Response(png, media_type="image/png", headers={"Cache-Control": "max-age=3600"})
+
+
+@app.get("/object/{model_id}/part", response_class=HTMLResponse)
+def part(request: Request, model_id: int, level: int, node: int) -> HTMLResponse:
+    """Search by a part: the models with a part like one node of this one (arg_part_match)."""
+    with catalogue.connect() as conn:
+        query = catalogue.model(conn, model_id)
+        if query is None:
+            raise errors.NotFound(f"there is no model {model_id} in the catalogue")
+        if query["descr"] is None:
+            raise errors.NotFound(f"model {model_id} has no mesh, so no parts")
+        count = catalogue.node_count(conn, model_id, level)
+        if not count or not 0 <= node < count:
+            where = f"level {level} has nodes 0 to {count - 1}" if count else \
+                f"its levels are 0 to {query['levels'] - 1}"
+            raise errors.NotFound(f"model {model_id} has no node {node} at level {level}: {where}")
+        form = ranking_form(conn, dict(request.query_params))
+        rows = catalogue.part_matches(conn, model_id, level, node, form["k"])
+        return page(request, "part.html", query=query, level=level, node=node, rows=rows, **form)
 
 
 @app.get("/upload", response_class=HTMLResponse)

@@ -62,10 +62,10 @@ def model(conn: psycopg.Connection[Any], model_id: int) -> Optional[Dict[str, An
         return cur.execute(statement, (model_id,)).fetchone()
 
 
-def thumbnail(conn: psycopg.Connection[Any], model_id: int) -> Optional[bytes]:
-    """The PNG rendered at load time, or None."""
-    row = conn.execute(sql.SQL("SELECT thumbnail FROM {} WHERE id = %s").format(
-        sql.Identifier(TABLE)), (model_id,)).fetchone()
+def thumbnail(conn: psycopg.Connection[Any], model_id: int, mu: bool = False) -> Optional[bytes]:
+    """A PNG rendered at load time, in the object's own colours or (mu) coloured by mu; or None."""
+    row = conn.execute(sql.SQL("SELECT {} FROM {} WHERE id = %s").format(
+        sql.Identifier("thumbnail_mu" if mu else "thumbnail"), sql.Identifier(TABLE)), (model_id,)).fetchone()
     return bytes(row[0]) if row and row[0] is not None else None
 
 
@@ -86,3 +86,91 @@ def count(conn: psycopg.Connection[Any]) -> int:
     """How many models the catalogue holds."""
     row = conn.execute(sql.SQL("SELECT count(*) FROM {}").format(sql.Identifier(TABLE))).fetchone()
     return int(row[0]) if row else 0
+
+
+# The "more like this" choices of appearance: the reader's word, the arg_weights preset it stands
+# for. Shape and colour is the default preset, whose ranking goes through <~> (and its index).
+APPEARANCE = {"shape": "shape", "shape-colour": "arg", "colour": "colour"}
+APPEARANCE_LABELS = {"shape": "shape only", "shape-colour": "shape and colour", "colour": "colour first"}
+DEFAULT_APPEARANCE = "shape-colour"
+
+
+def appearance(value: Optional[str]) -> str:
+    """The appearance a request asks for; anything unknown is the default."""
+    return value if value in APPEARANCE else DEFAULT_APPEARANCE
+
+
+def ranked_with(conn: psycopg.Connection[Any], query: pgarg.Arg, k: int, filters: Mapping[str, str],
+                look: str) -> List[Dict[str, Any]]:
+    """`ranked` with the weights of an appearance: the server's arg_sim under that preset, best first."""
+    weights = APPEARANCE[look]
+    if weights == "arg":
+        return ranked(conn, query, k, filters)
+    conditions = [sql.SQL("{} = %s").format(sql.Identifier(name)) for name in filters]
+    where = sql.SQL(" AND ").join(conditions) if conditions else sql.SQL("true")
+    # Ties broken by the ARG's canonical order, as the default ranking breaks them.
+    statement = sql.SQL(
+        "SELECT {columns}, arg_sim(descr, %s, %s::arg_weights) AS sim FROM {table} "
+        "WHERE descr IS NOT NULL AND {where} ORDER BY sim, descr LIMIT %s").format(
+            columns=sql.SQL(", ").join(map(sql.Identifier, COLUMNS)), table=sql.Identifier(TABLE),
+            where=where)
+    with conn.cursor(row_factory=dict_row) as cur:
+        return cur.execute(statement, [query, weights, *filters.values(), k]).fetchall()
+
+
+def stored_mesh(conn: psycopg.Connection[Any], model_id: int) -> Optional[Dict[str, Any]]:
+    """The mesh as stored, its file name and its number of triangles; None when there is no such id."""
+    statement = sql.SQL(
+        "SELECT file, mesh, (arg_info(descr)->>'triangles')::bigint AS triangles "
+        "FROM {} WHERE id = %s").format(sql.Identifier(TABLE))
+    with conn.cursor(row_factory=dict_row) as cur:
+        row = cur.execute(statement, (model_id,)).fetchone()
+    if row is not None and row["mesh"] is not None:
+        row["mesh"] = bytes(row["mesh"])
+    return row
+
+
+def sim_terms(conn: psycopg.Connection[Any], a: pgarg.Arg, b: pgarg.Arg,
+              weights: str) -> "tuple[float, List[Dict[str, Any]]]":
+    """arg_sim(a, b) and arg_sim_terms(a, b) under a preset, in one statement (one snapshot)."""
+    with conn.cursor(row_factory=dict_row) as cur:
+        rows = cur.execute(
+            "SELECT s.sim, t.term, t.weight, t.value, t.contribution "
+            "FROM (SELECT arg_sim(%(a)s, %(b)s, %(w)s::arg_weights) AS sim) s, "
+            "arg_sim_terms(%(a)s, %(b)s, %(w)s::arg_weights) WITH ORDINALITY AS t "
+            "ORDER BY t.ordinality", {"a": a, "b": b, "w": weights}).fetchall()
+    return (rows[0]["sim"] if rows else 0.0), rows
+
+
+def best_matches(conn: psycopg.Connection[Any], a: pgarg.Arg, b: pgarg.Arg, weights: str,
+                 level: int) -> List[Dict[str, Any]]:
+    """The matched groups at one level (arg_matches), best (largest share of sim) first."""
+    with conn.cursor(row_factory=dict_row) as cur:
+        return cur.execute(
+            "SELECT match_group, array_agg(DISTINCT a_node ORDER BY a_node) AS a_nodes, "
+            "array_agg(DISTINCT b_node ORDER BY b_node) AS b_nodes, max(sim) AS sim "
+            "FROM arg_matches(%s, %s, %s::arg_weights) WHERE level = %s "
+            "GROUP BY match_group ORDER BY max(sim) DESC, match_group",
+            (a, b, weights, level)).fetchall()
+
+
+def node_count(conn: psycopg.Connection[Any], model_id: int, level: int) -> Optional[int]:
+    """How many nodes a model's graph has at a level (0 for a level it lacks); None when there is no such id."""
+    row = conn.execute(sql.SQL(
+        "SELECT (SELECT count(*) FROM arg_nodes(descr) n WHERE n.level = %s) FROM {} WHERE id = %s").format(
+            sql.Identifier(TABLE)), (level, model_id)).fetchone()
+    return None if row is None else int(row[0])
+
+
+def part_matches(conn: psycopg.Connection[Any], query_id: int, level: int, node: int,
+                 k: int) -> List[Dict[str, Any]]:
+    """The other models with a part like node `node` of `level` of model `query_id`: each with its
+    best part (arg_part_match, lowest score first), best first; models without one are left out."""
+    statement = sql.SQL(
+        "SELECT {columns}, p.candidate_level AS part_level, p.candidate_node AS part_node, p.score "
+        "FROM {table} q, {table} o CROSS JOIN LATERAL ("
+        "  SELECT * FROM arg_part_match(q.descr, %s, %s, o.descr) ORDER BY score LIMIT 1) p "
+        "WHERE q.id = %s AND o.id <> q.id ORDER BY p.score, o.id LIMIT %s").format(
+            columns=sql.SQL(", ").join(sql.Identifier("o", c) for c in COLUMNS), table=sql.Identifier(TABLE))
+    with conn.cursor(row_factory=dict_row) as cur:
+        return cur.execute(statement, (level, node, query_id, k)).fetchall()

@@ -9,7 +9,8 @@
 # DIR is the cluster's folder (say build/pg-demo): the browser reads DIR/env to reach the server,
 # and keeps DIR/browser.pid, DIR/browser.port and its log DIR/browser.log there. It binds
 # 127.0.0.1 only; the port of the last run when it is free, else one the kernel picks.
-# BROWSER_START_TIMEOUT (seconds, default 60) bounds the wait for the first answer.
+# BROWSER_START_TIMEOUT (seconds, default 60) bounds the wait for the first answer. The 3D view
+# runs argtool: ARG_ARGTOOL, else BUILD_DIR/argtool (default build/argtool) of this repository.
 set -euo pipefail
 
 usage() { echo "usage: $0 start DIR | stop DIR | url DIR" >&2; exit 2; }
@@ -17,6 +18,8 @@ usage() { echo "usage: $0 start DIR | stop DIR | url DIR" >&2; exit 2; }
 action=$1
 here=$(cd "$(dirname "$0")" && pwd -P)
 python=${ARG_PYTHON:-/usr/bin/python3}
+# The 3D view and the pair pictures run argtool (view-data, render-match) on the stored meshes.
+argtool=${ARG_ARGTOOL:-$(cd "$here/../.." && pwd -P)/${BUILD_DIR:-build}/argtool}
 if [[ ! -d "$2" ]]; then
   [[ $action == stop ]] && exit 0
   echo "browser: no cluster folder $2 (start the cluster first)" >&2
@@ -75,7 +78,7 @@ start() {
   (
     # shellcheck disable=SC1091
     source "$dir/env"
-    export PGDATABASE=${PGDATABASE:-museum} PYTHONDONTWRITEBYTECODE=1
+    export PGDATABASE=${PGDATABASE:-museum} PYTHONDONTWRITEBYTECODE=1 ARG_ARGTOOL=$argtool
     exec "$python" "$here/serve.py" --port "$last" --port-file "$port_file" </dev/null >"$log" 2>&1
   ) &
   local pid=$! deadline=$((SECONDS + ${BROWSER_START_TIMEOUT:-60}))

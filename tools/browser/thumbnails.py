@@ -1,4 +1,5 @@
-"""Renders each model of objects without a thumbnail with `argtool render` and stores the PNG in the table."""
+"""Renders each model of objects without a thumbnail with `argtool render` and stores the PNGs in the table:
+the object upright in its own colours (thumbnail), and coloured by mu with its Reeb graph (thumbnail_mu)."""
 
 from __future__ import annotations
 
@@ -18,7 +19,7 @@ TABLE = "objects"
 
 def render_one(argtool: str, size: int, model_id: int, scratch: Path, timeout: float) -> Tuple[int, Optional[str]]:
     """Renders one model from the mesh stored in the table (so from what the server built, not a
-    file that may have moved since) and stores the PNG. Returns (id, None) or (id, why not)."""
+    file that may have moved since) and stores both PNGs. Returns (id, None) or (id, why not)."""
     with psycopg.connect(autocommit=True) as conn:
         row = conn.execute(f"SELECT file, mesh FROM {TABLE} WHERE id = %s", (model_id,)).fetchone()
         if row is None:
@@ -26,14 +27,16 @@ def render_one(argtool: str, size: int, model_id: int, scratch: Path, timeout: f
         file, mesh = row
         # argtool reads the format from the file name's suffix.
         mesh_path = scratch / f"{model_id}{Path(file).suffix.lower() or '.off'}"
-        png_path = scratch / f"{model_id}.png"
         mesh_path.write_bytes(bytes(mesh))
+        colours_path = scratch / f"{model_id}-colours.png"
+        mu_path = scratch / f"{model_id}-mu.png"
         try:
-            # A blank caption: the page prints the title; the colour legend would be unreadable
-            # at this size.
+            # Both in the canonical pose (the longest principal axis upright, seen along the
+            # shortest), from one computation of mu. A blank caption: the page prints the
+            # title; the colour legend would be unreadable at this size.
             done = subprocess.run(
-                [argtool, "render", str(mesh_path), "-o", str(png_path), "--size", str(size),
-                 "--no-legend", "--title", " "],
+                [argtool, "render", str(mesh_path), "-o", str(mu_path), "--colours-output", str(colours_path),
+                 "--size", str(size), "--no-legend", "--title", " "],
                 capture_output=True, text=True, timeout=timeout)
         except subprocess.TimeoutExpired:
             return model_id, f"argtool render took more than {timeout:.0f} s"
@@ -42,8 +45,11 @@ def render_one(argtool: str, size: int, model_id: int, scratch: Path, timeout: f
         if done.returncode != 0:
             lines = (done.stderr.strip() or done.stdout.strip() or f"exit status {done.returncode}").splitlines()
             return model_id, lines[-1]
-        conn.execute(f"UPDATE {TABLE} SET thumbnail = %b WHERE id = %s", (png_path.read_bytes(), model_id))
-        png_path.unlink()
+        pictures = [colours_path.read_bytes(), mu_path.read_bytes()]
+        colours_path.unlink()
+        mu_path.unlink()
+        conn.execute(f"UPDATE {TABLE} SET thumbnail = %b, thumbnail_mu = %b WHERE id = %s",
+                     (pictures[0], pictures[1], model_id))
         return model_id, None
 
 

@@ -27,7 +27,8 @@ CREATE TABLE objects (
   mesh         bytea,
   texture      bytea,                -- for OBJ files that keep it outside
   descr        arg GENERATED ALWAYS AS (arg_build(mesh)) STORED,
-  thumbnail    bytea                 -- a PNG for the catalogue browser (tools/browser/thumbnails.py)
+  thumbnail    bytea,                -- PNGs for the catalogue browser (tools/browser/thumbnails.py):
+  thumbnail_mu bytea                 -- the object in its own colours, and coloured by mu
 );
 
 CREATE TEMP TABLE catalogue (

@@ -6,6 +6,7 @@
 #                                     tools, sanitizers, fuzzers or browser for tests
 #
 # Runs apt-get update first; uses sudo only when not root. ARG_SKIP_DEPS=1 skips the check.
+# Then the browser's JavaScript from npm, pinned by tools/browser/package-lock.json.
 set -euo pipefail
 
 demo_packages=(
@@ -23,6 +24,8 @@ demo_packages=(
   # the Python client (clients/python) and the catalogue browser (tools/browser): Debian's
   # packages, as PyPI is not used
   python3-psycopg python3-numpy python3-fastapi python3-uvicorn python3-multipart python3-jinja2
+  # the browser's 3D view: three.js from the npm registry (tools/browser/install_js.sh)
+  npm
 )
 test_packages=(
   # pgTAP and pg_prove
@@ -45,13 +48,15 @@ packages=("${demo_packages[@]}")
 
 missing=()
 for p in "${packages[@]}"; do
+  # Any npm will do: a Node.js from elsewhere (NodeSource's conflicts with Debian's npm).
+  [[ $p == npm ]] && command -v npm >/dev/null && continue
   status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
   [[ "$status" == installed ]] || missing+=("$p")
 done
 
 if [[ ${#missing[@]} -eq 0 ]]; then
   echo "deps: all ${#packages[@]} packages present"
-  exit 0
+  exec "$(dirname "$0")/../browser/install_js.sh"
 fi
 
 sudo=()
@@ -64,3 +69,4 @@ echo "deps: installing ${missing[*]}"
 "${sudo[@]}" apt-get update -q
 "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive \
   apt-get install -y -q --no-install-recommends "${missing[@]}"
+"$(dirname "$0")/../browser/install_js.sh"

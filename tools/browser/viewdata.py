@@ -1,0 +1,74 @@
+"""The 3D view's data of a catalogue object: `argtool view-data` run on the mesh stored in the table, kept for reuse."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import tempfile
+import threading
+from collections import OrderedDict
+from pathlib import Path
+from typing import Optional, Tuple
+
+HERE = Path(__file__).resolve().parent
+# server.sh sets it from BUILD_DIR; the default is the repository's build folder.
+ARGTOOL = os.environ.get("ARG_ARGTOOL") or str(HERE.parent.parent / "build" / "argtool")
+# Above this many triangles the view would be slow to send and to turn: the page says so instead.
+# ARG_VIEW_MAX_TRIANGLES lowers it (the browser's tests make their largest sample model too large).
+MAX_TRIANGLES = int(os.environ.get("ARG_VIEW_MAX_TRIANGLES") or 500_000)
+# Seconds one conversion may take (it reruns the ARG's geometry: mu on the whole surface).
+TIMEOUT = 120
+# The last few objects' JSON, by (id, sha of the mesh): an object page reloads its view often.
+KEEP = 8
+
+
+class ViewUnavailable(Exception):
+    """Why an object cannot be shown in 3D, in words for the reader, with an HTTP status."""
+
+    def __init__(self, message: str, status_code: int) -> None:
+        super().__init__(message)
+        self.message = message
+        self.status_code = status_code
+
+
+_cache: "OrderedDict[Tuple[int, int], bytes]" = OrderedDict()
+_lock = threading.Lock()
+
+
+def convert(model_id: int, file: str, mesh: Optional[bytes], triangles: Optional[int]) -> bytes:
+    """The JSON of `argtool view-data` for one stored mesh; raises ViewUnavailable with the reason."""
+    if mesh is None:
+        raise ViewUnavailable(f"model {model_id} has no mesh stored: there is nothing to show in 3D", 404)
+    if triangles is not None and triangles > MAX_TRIANGLES:
+        raise ViewUnavailable(f"model {model_id} is too large to display in 3D: {triangles:,} triangles, "
+                              f"more than {MAX_TRIANGLES:,}", 413)
+    key = (model_id, hash(mesh))
+    with _lock:
+        if key in _cache:
+            _cache.move_to_end(key)
+            return _cache[key]
+    if not os.access(ARGTOOL, os.X_OK):
+        raise ViewUnavailable(f"the 3D view needs argtool, not found at {ARGTOOL} (build first)", 503)
+    with tempfile.TemporaryDirectory(prefix="arg-view-") as scratch:
+        # argtool reads the format from the content; the suffix keeps OBJ's texture lookup right.
+        source = Path(scratch) / f"model{Path(file or '').suffix.lower() or '.off'}"
+        target = Path(scratch) / "view.json"
+        source.write_bytes(mesh)
+        try:
+            done = subprocess.run([ARGTOOL, "view-data", str(source), "-o", str(target),
+                                   "--max-triangles", str(MAX_TRIANGLES)],
+                                  capture_output=True, text=True, timeout=TIMEOUT)
+        except subprocess.TimeoutExpired:
+            raise ViewUnavailable(f"model {model_id} took more than {TIMEOUT} s to prepare for the 3D view",
+                                  503) from None
+        if done.returncode != 0:
+            lines = (done.stderr.strip() or done.stdout.strip() or f"exit status {done.returncode}").splitlines()
+            why = lines[-1]
+            status = 413 if "too large to display" in why else 422
+            raise ViewUnavailable(f"model {model_id} cannot be shown in 3D: {why}", status)
+        data = target.read_bytes()
+    with _lock:
+        _cache[key] = data
+        while len(_cache) > KEEP:
+            _cache.popitem(last=False)
+    return data
