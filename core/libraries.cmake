@@ -51,8 +51,9 @@ set(ARG_RENDER_SOURCES
     render/graph_svg.cpp render/match_picture.cpp render/rasterise_mesh.cpp
     render/render_model.cpp render/view_camera.cpp)
 set(ARG_EVAL_SOURCES
-    eval/baseline_descriptors.cpp eval/distance_matrix_file.cpp eval/label_file.cpp
-    eval/perturbations.cpp eval/pr_plot.cpp eval/quadric_decimation.cpp eval/refine_faces.cpp
+    eval/baseline_descriptors.cpp eval/csv_records.cpp eval/distance_matrix_file.cpp
+    eval/label_file.cpp eval/perturbations.cpp eval/pr_plot.cpp eval/quadric_decimation.cpp
+    eval/refine_faces.cpp
     eval/retrieval_metrics.cpp eval/set_weights_file.cpp eval/term_matrices.cpp
     eval/value_jitter.cpp eval/weight_search.cpp)
 # The plug-ins' sources, listed with their targets in CMakeLists.txt.

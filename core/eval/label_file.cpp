@@ -1,55 +1,20 @@
-// A small strict CSV reader for labelled model lists.
+// Labelled model lists: the CSV records checked for the header model_id,path,class.
 #include "eval/label_file.hpp"
 
 #include <set>
 
 #include "common/errors.hpp"
+#include "eval/csv_records.hpp"
 
 namespace arg {
-
-namespace {
-
-std::vector<std::string> split_csv_line(std::string_view line, int number) {
-  std::vector<std::string> fields(1);
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"')
-        fields.back() += '"', ++i;
-      else if (c == '"')
-        quoted = false;
-      else
-        fields.back() += c;
-    } else if (c == '"' && fields.back().empty()) {
-      quoted = true;
-    } else if (c == ',') {
-      fields.emplace_back();
-    } else {
-      fields.back() += c;
-    }
-  }
-  if (quoted) throw InputError("labels: line " + std::to_string(number) + ": unterminated quote");
-  return fields;
-}
-
-}  // namespace
 
 LabelSet parse_label_csv(std::string_view text) {
   LabelSet set;
   std::set<std::string> ids;
-  int number = 0;
-  std::size_t pos = 0;
   bool header = true;
-  while (pos < text.size()) {
-    std::size_t end = text.find('\n', pos);
-    if (end == std::string_view::npos) end = text.size();
-    std::string_view line = text.substr(pos, end - pos);
-    pos = end + 1;
-    ++number;
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    if (line.empty()) continue;
-    std::vector<std::string> f = split_csv_line(line, number);
+  for (const CsvRecord& record : parse_csv_records(text, "labels")) {
+    const int number = record.line;
+    const std::vector<std::string>& f = record.fields;
     if (header) {
       if (f.size() != 3 || f[0] != "model_id" || f[1] != "path" || f[2] != "class")
         throw InputError("labels: line " + std::to_string(number) +

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # argtool as a user's script runs it: fast start without images, images loaded when needed,
-# progress in a log file as plain lines. Prints TAP lines.
+# progress in a log file as plain lines, ingest's rows. Prints TAP lines.
 #
 #   tests/argtool/cli.sh [ARGTOOL]      (default: build/argtool)
 set -uo pipefail
@@ -138,4 +138,48 @@ for c in t["classes"] + [dict(t["all"], **{"class": "all"})]:
 assert abs(t["all"]["peers"]["d2-test"]["ft"] - json.load(open(sys.argv[3]))["ft"]) < 1e-12
 assert t["held_out_weights"] and t["held_out_weights"] != t["training_weights"]
 PY
+# 8. ingest: a folder and its catalogue to COPY rows, a bad file reported while the others load,
+# the same bytes whatever the thread count, each ARG what `argtool build` writes for its file.
+"$argtool" gen --out "$work/ing" --per-class 1 --class cup --class torus --class vase \
+  > /dev/null 2>&1
+mkdir -p "$work/ing/more"
+cp "$work/ing/torus_00.off" "$work/ing/more/torus copy.off"
+printf 'OFF\nthis is not a mesh\n' > "$work/ing/bad.off"
+"$argtool" ingest "$work/ing" --catalogue "$work/ing/catalogue.csv" --threads 1 \
+  > "$work/ing1.copy" 2> "$work/ing1.err"
+status1=$?
+"$argtool" ingest "$work/ing" --catalogue "$work/ing/catalogue.csv" --threads 2 \
+  > "$work/ing2.copy" 2> "$work/ing2.err"
+check "ingest skips a bad file, names it and loads the others (exit 0)" bash -c "
+  test $status1 -eq 0 && test \$(wc -l < '$work/ing1.copy') -eq 4 &&
+  test \$(grep -c '^ingest: skipped ' '$work/ing1.err') -eq 1 &&
+  grep -q '^ingest: skipped bad.off: ' '$work/ing1.err'"
+check "ingest writes the same bytes on 1 and 2 threads" cmp -s "$work/ing1.copy" "$work/ing2.copy"
+check "ingest rows: the catalogue's fields in order, NULL where it lists none, then the ARG" \
+  awk -F'\t' 'NF != 10 || $10 !~ /^arg1:/ { bad = 1 }
+    $2 == "cup_00.off" && $1 == "cup_00" && $3 == "cup" { listed++ }
+    $2 == "more/torus copy.off" && $1 == "\\N" && $5 == "\\N" { unlisted++ }
+    END { exit bad || listed != 1 || unlisted != 1 }' "$work/ing1.copy"
+check "each ingested ARG is the bytes argtool build writes for its file" python3 - \
+  "$argtool" "$work/ing" "$work/ing1.copy" << 'PY'
+import base64, subprocess, sys, tempfile
+argtool, folder, rows = sys.argv[1:]
+with tempfile.TemporaryDirectory() as tmp:
+    for line in open(rows, encoding="utf-8"):
+        f = line.rstrip("\n").split("\t")
+        subprocess.run([argtool, "build", f"{folder}/{f[1]}", "-o", f"{tmp}/a.arg"], check=True,
+                       stdout=subprocess.DEVNULL)
+        assert base64.b64decode(f[-1][5:]) == open(f"{tmp}/a.arg", "rb").read(), f[1]
+PY
+"$argtool" ingest "$work/ing" --strict > /dev/null 2>&1
+status=$?
+mkdir -p "$work/none"
+printf 'OFF\n' > "$work/none/a.off"
+"$argtool" ingest "$work/none" > /dev/null 2>&1
+status_none=$?
+check "ingest exits 1 on a skipped file with --strict, and when every file is skipped" \
+  test "$status" -eq 1 -a "$status_none" -eq 1
+"$argtool" ingest "$work/ing" --table finds 2> /dev/null | sed -n '1p;$p' > "$work/script.txt"
+check "ingest --table writes a psql script: COPY with the columns, the rows, \\." \
+  test "$(cat "$work/script.txt")" = $'COPY finds ("file", "descr") FROM STDIN;\n\\.'
 echo "1..$n"

@@ -1,6 +1,5 @@
 // argtool sheet: a contact sheet of a query and its best-ranked candidates, with their SIM.
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +10,7 @@
 #include "command_registry.hpp"
 #include "load_arg.hpp"
 #include "match/similarity.hpp"
+#include "mesh_files.hpp"
 #include "plugin_libraries.hpp"
 #include "render/contact_sheet.hpp"
 #include "render/render_model.hpp"
@@ -28,12 +28,6 @@ struct SheetArgs {
   arg::BuildOptions options;
 };
 
-bool is_mesh_file(const fs::path& p) {
-  std::string ext = p.extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl" || ext == ".glb";
-}
-
 // The candidates named on the command line, then the mesh files of the folder sorted by name,
 // without the query itself.
 std::vector<std::string> candidate_paths(const SheetArgs& a) {
@@ -41,7 +35,7 @@ std::vector<std::string> candidate_paths(const SheetArgs& a) {
   if (!a.folder.empty()) {
     std::vector<std::string> found;
     for (const auto& entry : fs::directory_iterator(a.folder))
-      if (entry.is_regular_file() && is_mesh_file(entry.path()))
+      if (entry.is_regular_file() && argtool::is_mesh_file(entry.path()))
         found.push_back(entry.path().string());
     std::sort(found.begin(), found.end());
     paths.insert(paths.end(), found.begin(), found.end());
