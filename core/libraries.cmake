@@ -9,8 +9,8 @@
 # argeval. Plain C++17, no PostgreSQL headers; position independent (linked into the extension).
 
 set(ARG_METHOD_SOURCES
-    common/base64.cpp common/build_options.cpp common/key_values.cpp common/limits.cpp
-    common/parallel_for.cpp
+    common/base64.cpp common/build_options.cpp common/heap_usage.cpp common/key_values.cpp
+    common/limits.cpp common/parallel_for.cpp
     mesh/append_faces.cpp mesh/boundary_loops.cpp mesh/bridge_pieces.cpp mesh/clean_mesh.cpp
     mesh/coincident_vertices.cpp mesh/collapse_short_edges.cpp mesh/connected_components.cpp
     mesh/distance_field.cpp mesh/face_subset.cpp mesh/fill_holes.cpp
@@ -38,8 +38,8 @@ set(ARG_METHOD_SOURCES
     search/coarse_sketch.cpp search/query_ranker.cpp search/search_descriptor.cpp
     search/shape_sketch.cpp
     search/ivf_page.cpp search/sketch_cells.cpp
-    pipeline/build_arg.cpp pipeline/node_positions.cpp pipeline/pool_fragments.cpp
-    pipeline/prepare_surface.cpp)
+    pipeline/build_arg.cpp pipeline/build_memory.cpp pipeline/node_positions.cpp
+    pipeline/pool_fragments.cpp pipeline/prepare_surface.cpp)
 set(ARG_GEN_SOURCES
     gen/creature_models.cpp gen/furniture_models.cpp gen/generate_models.cpp
     gen/implicit_solid.cpp gen/marching_tetrahedra.cpp gen/model_blueprints.cpp

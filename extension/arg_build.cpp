@@ -14,11 +14,22 @@ varlena* build_arg_datum(std::string_view mesh, std::string_view texture,
   const int max_threads = max_build_threads();
   varlena* result = nullptr;
   prepare_image_decoder(mesh, texture);
+  bool over_memory = false;
   Outcome out = guarded([&] {
     arg::BuildOptions parsed = arg::parse_build_options(options);
     if (parsed.threads > max_threads) parsed.threads = max_threads;  // never changes the result
-    result = to_varlena(arg::build_arg_bytes(mesh, texture, parsed, limits, stop_requested));
+    try {
+      result = to_varlena(arg::build_arg_bytes(mesh, texture, parsed, limits, stop_requested));
+    } catch (const arg::MemoryLimitError&) {
+      over_memory = true;
+      throw;
+    }
   });
+  if (over_memory)
+    ereport(ERROR, (errcode(ERRCODE_PROGRAM_LIMIT_EXCEEDED),
+                    errmsg("cannot build ARG: %s (arg.max_build_memory)", out.message),
+                    errhint("A superuser may raise arg.max_build_memory, or the mesh may be "
+                            "simplified first.")));
   raise_if_failed(out, ERRCODE_INVALID_PARAMETER_VALUE, "cannot build ARG");
   return result;
 }

@@ -23,6 +23,7 @@ int max_input_kb = int(kDefaults.max_input_bytes >> 10);
 int max_vertices = int(kDefaults.max_vertices);
 int max_triangles = int(kDefaults.max_triangles);
 int max_texture_pixels = int(kDefaults.max_image_pixels);
+int max_build_memory_mb = int(kDefaults.max_build_bytes >> 20);
 int build_threads = 1;
 bool query_cache = true;
 int ivf_probes_setting = 4;
@@ -56,6 +57,13 @@ void define_gucs() {
                           "Most pixels a texture image given to arg_build may have.",
                           "Larger images fail with SQLSTATE 54000.", &max_texture_pixels,
                           max_texture_pixels, 1, INT_MAX, PGC_SUSET, 0, nullptr, nullptr, nullptr);
+  DefineCustomIntVariable(
+      "arg.max_build_memory", "Most memory one arg_build may take.",
+      "A build whose estimate from the mesh's vertices and triangles is larger is refused before "
+      "it allocates, and one whose allocations grow past it is stopped; both fail with SQLSTATE "
+      "54000.",
+      &max_build_memory_mb, max_build_memory_mb, 1, INT_MAX, PGC_SUSET, GUC_UNIT_MB, nullptr,
+      nullptr, nullptr);
   DefineCustomIntVariable(
       "arg.max_build_threads", "Most threads one arg_build may use for its threads= option.",
       "The number of threads never changes the ARG; 1 keeps every build in the backend's own "
@@ -103,6 +111,7 @@ arg::Limits current_limits() {
   limits.max_vertices = std::size_t(max_vertices);
   limits.max_triangles = std::size_t(max_triangles);
   limits.max_image_pixels = std::size_t(max_texture_pixels);
+  limits.max_build_bytes = std::size_t(max_build_memory_mb) << 20;
   return limits;
 }
 

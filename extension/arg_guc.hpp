@@ -10,7 +10,8 @@ namespace argpg {
 void define_gucs();
 
 // The input caps as set now (arg.max_input_size, arg.max_vertices, arg.max_triangles,
-// arg.max_texture_pixels). Plain values: safe inside guarded().
+// arg.max_texture_pixels) and the build's memory (arg.max_build_memory). Plain values: safe
+// inside guarded().
 arg::Limits current_limits();
 
 // arg.max_build_threads: the most threads a build may use, whatever its `threads=` option says.

@@ -20,6 +20,10 @@ RESET arg.max_triangles;
 SET arg.max_vertices = 1000;
 SELECT arg_build(mesh) FROM big;
 RESET arg.max_vertices;
+-- A build whose memory estimate is over arg.max_build_memory is refused once the mesh is read.
+SET arg.max_build_memory = '16MB';
+SELECT arg_build(mesh) FROM big;
+RESET arg.max_build_memory;
 
 -- A long build stops when the statement times out (or is cancelled); the session goes on.
 SET statement_timeout = '20ms';

@@ -25,6 +25,13 @@ class LimitError : public Error {
   using Error::Error;
 };
 
+// A build that would take, or has taken, more memory than its cap (Limits::max_build_bytes).
+// The message gives the figures in MB; the caller names its own setting.
+class MemoryLimitError : public LimitError {
+ public:
+  using LimitError::LimitError;
+};
+
 // Two ARGs made by builders of another major or minor version, or with other build options,
 // whose comparison would rank by how they were built as much as by shape
 // (graph/comparable.hpp). The message names both versions and both options.

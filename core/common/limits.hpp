@@ -6,12 +6,16 @@
 
 namespace arg {
 
-// Caps applied while reading untrusted input; exceeding one throws LimitError.
+// Caps applied while reading untrusted input and building from it; exceeding one throws
+// LimitError.
 struct Limits {
   std::size_t max_input_bytes = std::size_t(512) << 20;
   std::size_t max_vertices = 4'000'000;
   std::size_t max_triangles = 8'000'000;
   std::size_t max_image_pixels = std::size_t(64) << 20;
+  // Memory one build may take (pipeline/build_memory.hpp refuses by estimate, then
+  // common/heap_usage.hpp stops it by its allocations); 0 means no cap.
+  std::size_t max_build_bytes = std::size_t(1) << 30;
 };
 
 // Polled from long loops; returns true when the work should stop (the core then throws

@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "common/errors.hpp"
+#include "common/heap_usage.hpp"
 #include "features/curvature.hpp"
 #include "features/laplace_spectrum.hpp"
 #include "features/node_attributes.hpp"
@@ -14,6 +15,7 @@
 #include "mesh/mesh_edges.hpp"
 #include "mesh/taubin_smoothing.hpp"
 #include "mu/mu_function.hpp"
+#include "pipeline/build_memory.hpp"
 #include "pipeline/pool_fragments.hpp"
 #include "pipeline/prepare_surface.hpp"
 #include "reeb/reeb_levels.hpp"
@@ -172,14 +174,20 @@ std::string build_arg_bytes(std::string_view mesh_bytes, std::string_view textur
   if (mesh_bytes.size() > limits.max_input_bytes)
     throw LimitError("mesh of " + std::to_string(mesh_bytes.size()) + " bytes exceeds the cap of " +
                      std::to_string(limits.max_input_bytes) + " bytes");
+  // Every poll from here on also holds the heap to the cap, the reading included: the estimate
+  // below is a bound fitted to measured builds, this is the backstop for the mesh it misses.
+  const StopRequested bounded = bounded_by_heap(stop, limits.max_build_bytes);
   Stopwatch clock;
   ReadOptions read;
   read.limits = limits;
   read.texture = texture;
-  read.stop = stop;
+  read.stop = bounded;
   Mesh mesh = read_mesh(mesh_bytes, read, &rep.read);
   double read_ms = clock.lap();
-  ArgGraph g = build_arg(mesh, options, stop, &rep);
+  // Refused before the build's large allocations, as soon as the counts are known.
+  check_build_memory(std::size_t(mesh.V.rows()), std::size_t(mesh.F.rows()), options,
+                     limits.max_build_bytes);
+  ArgGraph g = build_arg(mesh, options, bounded, &rep);
   rep.ms.read = read_ms;
   clock.lap();
   std::string bytes = serialize_arg(g);

@@ -38,7 +38,10 @@ struct BuildReport {
 ArgGraph build_arg(const Mesh& mesh, const BuildOptions& options = {},
                    const StopRequested& stop = {}, BuildReport* report = nullptr);
 
-// Reads `mesh_bytes` (format detected), builds and serialises. `texture` may be empty.
+// Reads `mesh_bytes` (format detected), builds and serialises. `texture` may be empty. Throws
+// LimitError over a cap of `limits`, memory included: refused when the estimate for the mesh's
+// counts is over limits.max_build_bytes (pipeline/build_memory.hpp), stopped when the heap grows
+// past it during the build (common/heap_usage.hpp).
 std::string build_arg_bytes(std::string_view mesh_bytes, std::string_view texture,
                             const BuildOptions& options = {}, const Limits& limits = {},
                             const StopRequested& stop = {}, BuildReport* report = nullptr);

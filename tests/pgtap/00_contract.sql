@@ -1,7 +1,7 @@
 -- The SQL contract of the extension: its objects, their signatures and their markings.
 BEGIN;
 CREATE EXTENSION IF NOT EXISTS arg CASCADE;
-SELECT plan(203);
+SELECT plan(205);
 
 SELECT has_extension('arg', 'the arg extension is installed');
 SELECT has_type('arg', 'type arg exists');
@@ -169,8 +169,23 @@ SELECT is((SELECT procost FROM pg_proc WHERE oid = 'arg_distance(arg,arg)'::regp
 -- Settings: the arg. prefix is reserved; caps only a superuser may raise.
 SELECT throws_ok($$ SET arg.no_such_setting = 1 $$, '42602', NULL,
                  'the arg. prefix is reserved: unknown settings are refused');
-SELECT is((SELECT count(*)::int FROM pg_settings WHERE name LIKE 'arg.max%' AND context = 'superuser'), 5,
-          'the five caps are superuser settings');
+SELECT is((SELECT count(*)::int FROM pg_settings WHERE name LIKE 'arg.max%' AND context = 'superuser'), 6,
+          'the six caps are superuser settings');
+-- The SQLSTATE of setting arg.max_build_memory as role `who` (the role reverts with the block).
+CREATE FUNCTION pg_temp.set_memory_cap_as(who name) RETURNS text LANGUAGE plpgsql AS $$
+BEGIN
+  EXECUTE format('SET LOCAL ROLE %I', who);
+  SET arg.max_build_memory = '64GB';
+  RAISE EXCEPTION 'set';  -- undoes the role and the setting
+EXCEPTION WHEN raise_exception THEN
+  RETURN '00000';
+WHEN others THEN
+  RETURN SQLSTATE;
+END $$;
+CREATE ROLE arg_plain_user NOLOGIN;
+SELECT is(pg_temp.set_memory_cap_as('arg_plain_user'), '42501',
+          'a user who is not a superuser cannot raise arg.max_build_memory');
+SELECT is(pg_temp.set_memory_cap_as(current_user), '00000', 'a superuser can');
 SELECT is((SELECT context FROM pg_settings WHERE name = 'arg.query_cache'), 'user',
           'arg.query_cache is a user setting');
 

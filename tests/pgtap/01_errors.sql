@@ -2,7 +2,7 @@
 -- still answers a query: no C++ exception and no crash crosses into PostgreSQL.
 BEGIN;
 CREATE EXTENSION IF NOT EXISTS arg CASCADE;
-SELECT plan(45);
+SELECT plan(49);
 
 CREATE TEMP TABLE session AS SELECT pg_backend_pid() AS pid;
 CREATE TEMP TABLE fixture AS
@@ -79,6 +79,17 @@ SELECT throws_ok($$ SELECT arg_build(mesh) FROM big $$,
                  '54000', NULL, 'a mesh over arg.max_triangles is rejected (54000)');
 RESET arg.max_triangles;
 SELECT pg_temp.still_answers('too many triangles');
+
+-- Over the build's memory cap: 54000 from the estimate, before the build allocates.
+SET arg.max_build_memory = '16MB';
+SELECT throws_like($$ SELECT arg_build(mesh) FROM big $$,
+                   '%needs an estimated % MB, more than the build memory cap of 16 MB (arg.max_build_memory)',
+                   'a mesh whose build needs more than arg.max_build_memory is refused, naming both');
+SELECT is(pg_temp.sqlstate_of($$ SELECT arg_build(mesh) FROM big $$), '54000',
+          'a build over arg.max_build_memory fails with 54000');
+RESET arg.max_build_memory;
+SELECT pg_temp.still_answers('a build over the memory cap');
+SELECT lives_ok($$ SELECT arg_build(mesh) FROM big $$, 'under the default cap the same mesh builds');
 
 -- Bad arg values: 22P02 for text input, as strict as binary input.
 SELECT throws_ok($$ SELECT ('arg1:' || overlay(t PLACING CASE WHEN substr(t, 1001, 1) = 'B' THEN 'C' ELSE 'B' END

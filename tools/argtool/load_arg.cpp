@@ -8,7 +8,7 @@
 namespace argtool {
 
 LoadedArg load_arg(const std::string& path, const arg::BuildOptions& options,
-                   const std::string& texture_path) {
+                   const std::string& texture_path, const arg::Limits& limits) {
   LoadedArg out;
   std::string bytes = read_file_bytes(path);
   if (bytes.compare(0, 4, "ARGR") == 0) {
@@ -18,7 +18,11 @@ LoadedArg load_arg(const std::string& path, const arg::BuildOptions& options,
   }
   std::string texture = texture_path.empty() ? std::string() : read_file_bytes(texture_path);
   try {
-    out.bytes = arg::build_arg_bytes(bytes, texture, options, {}, {}, &out.report);
+    out.bytes = arg::build_arg_bytes(bytes, texture, options, limits, {}, &out.report);
+  } catch (const arg::MemoryLimitError& e) {
+    throw arg::MemoryLimitError(path + ": " + e.what());
+  } catch (const arg::LimitError& e) {
+    throw arg::LimitError(path + ": " + e.what());  // still a limit: argtool exits with 3
   } catch (const arg::Error& e) {
     throw std::runtime_error(path + ": " + e.what());
   }

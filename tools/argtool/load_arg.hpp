@@ -17,9 +17,9 @@ struct LoadedArg {
 };
 
 // Files starting with the ARG magic are read as ARGs; anything else is built as a mesh with
-// `options` (and the texture file, when given).
+// `options` (and the texture file, when given) under the caps of `limits`.
 LoadedArg load_arg(const std::string& path, const arg::BuildOptions& options = {},
-                   const std::string& texture_path = "");
+                   const std::string& texture_path = "", const arg::Limits& limits = {});
 
 // Adds --levels, --mu and --base-points (and --threads unless the subcommand has its own)
 // to a subcommand, writing into `options`.
