@@ -6,6 +6,7 @@
 #include "features/depth_buffer_descriptor.hpp"
 #include "features/panorama_descriptor.hpp"
 #include "features/shape_distributions.hpp"
+#include "features/vessel_profile.hpp"
 #include "mesh/clean_mesh.hpp"
 #include "mesh/normalize_pose.hpp"
 
@@ -25,6 +26,9 @@ std::vector<float> panorama(const Mesh& m) {
 std::vector<float> depth(const Mesh& m) {
   return depth_buffer_descriptor(depth_images(m, 64), 8);
 }
+std::vector<float> profile(const Mesh& m) {
+  return profile_vector(vessel_profile(m));
+}
 
 }  // namespace
 
@@ -39,6 +43,10 @@ const std::vector<DescriptorMethod>& descriptor_methods() {
       {"panorama",
        "Papadakis et al.: Fourier magnitudes of cylindrical views about the axes of two frames",
        panorama, panorama_distance},
+      {"profile",
+       "the vessel profile: area, mean radius and its spread in 24 height bins along the most "
+       "rotationally symmetric principal axis",
+       profile, profile_distance},
   };
   return methods;
 }

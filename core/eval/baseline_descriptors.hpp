@@ -16,7 +16,7 @@ struct DescriptorMethod {
   double (*distance)(const std::vector<float>&, const std::vector<float>&);
 };
 
-// d2 (Osada et al.), cords (Paquet and Rioux), depth (Vranic's depth buffer), ...
+// d2 (Osada et al.), cords (Paquet and Rioux), depth (Vranic's depth buffer), ..., profile.
 const std::vector<DescriptorMethod>& descriptor_methods();
 
 // nullptr when no method has that name.

@@ -42,6 +42,17 @@ void normalise(std::vector<float>& h) {
 
 }  // namespace
 
+std::vector<Eigen::Vector3d> surface_samples(const Mesh& mesh, int count, std::uint64_t seed) {
+  std::vector<Eigen::Vector3d> points;
+  if (mesh.F.rows() == 0 || count <= 0) return points;
+  const std::vector<double> cdf = area_cdf(mesh);
+  if (!(cdf.back() > 0)) return points;
+  SeededRandom rng(seed);
+  points.reserve(std::size_t(count));
+  for (int i = 0; i < count; ++i) points.push_back(sample_point(mesh, cdf, rng));
+  return points;
+}
+
 std::vector<float> d2_histogram(const Mesh& mesh, int bins, int pairs, double max_distance) {
   std::vector<float> h(std::size_t(bins), 0.0f);
   if (mesh.F.rows() == 0) return h;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "graph/arg_graph.hpp"
@@ -9,6 +10,10 @@
 #include "mesh/normalize_pose.hpp"
 
 namespace arg {
+
+// `count` points on the surface, uniform by area, from a fixed seed: the same mesh and count give
+// the same points on every platform. Empty when the surface has no area.
+std::vector<Eigen::Vector3d> surface_samples(const Mesh& mesh, int count, std::uint64_t seed);
 
 // D2: distances between `pairs` random surface point pairs (area-weighted, fixed seed), in
 // `bins` bins over [0, max_distance); the histogram sums to 1. Expects unit RMS radius.

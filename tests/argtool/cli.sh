@@ -138,6 +138,18 @@ for c in t["classes"] + [dict(t["all"], **{"class": "all"})]:
 assert abs(t["all"]["peers"]["d2-test"]["ft"] - json.load(open(sys.argv[3]))["ft"]) < 1e-12
 assert t["held_out_weights"] and t["held_out_weights"] != t["training_weights"]
 PY
+"$argtool" eval --labels "$work/pc/labels.csv" --per-class --method arg --method d2 \
+  --peers "$work/peers" --json "$work/pcm.json" > "$work/pcm.txt" 2> /dev/null
+check "another --method's FT per class beside arg's: d2's, equal to its matrix read as a peer" \
+  awk '/^per class: pc/ { on = 1; next } on && /d2 FT +D2 FT +HAND FT$/ { head = 1 }
+    on && ($1 == "cup" || $1 == "torus" || $1 == "all") && NF == 9 && $7 == $8 { rows++ }
+    END { exit !(head && rows == 3) }' "$work/pcm.txt"
+check "the per-class JSON holds the other method's scores" python3 -c '
+import json, sys
+t = json.load(open(sys.argv[1]))
+for c in t["classes"] + [t["all"]]:
+    assert c["methods"]["d2"] == c["peers"]["d2-test"], c
+' "$work/pcm.per_class.json"
 # 8. ingest: a folder and its catalogue to COPY rows, a bad file reported while the others load,
 # the same bytes whatever the thread count, each ARG what `argtool build` writes for its file.
 "$argtool" gen --out "$work/ing" --per-class 1 --class cup --class torus --class vase \

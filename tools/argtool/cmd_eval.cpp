@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <thread>
 
 #include "command_registry.hpp"
@@ -223,7 +224,7 @@ argtool::PerClassColumns per_class_columns(const std::string& name, const arg::L
                                            const arg::RetrievalScores& training,
                                            const std::vector<arg::SetWeights>& folds,
                                            const EvalArgs& a) {
-  argtool::PerClassColumns columns{name, &set, training, {}, {}, {}, {}, {}};
+  argtool::PerClassColumns columns{name, &set, training, {}, {}, {}, {}, {}, {}};
   columns.training_label = a.weights.empty()
                                ? "the shipped weights, learnt on every set: a training score"
                                : "--weights " + a.weights;
@@ -279,11 +280,13 @@ const bool registered = argtool::register_command(
       app.add_option("--matrix", a->matrix,
                      "write the distance matrix: a line per model in label order, failed models "
                      "inf (several sets or methods: FILE.SET.METHOD.txt)");
-      app.add_flag("--per-class", a->per_class,
-                   "also a table per set of each class's NN and FT under the arg method: held "
-                   "out (the set's --weights-per-set weights) beside training (--weights, "
-                   "default the shipped weights, learnt on every set); with --json, the same "
-                   "numbers in OUT.per_class.json");
+      app.add_flag(
+          "--per-class", a->per_class,
+          "also a table per set of each class's NN and FT under the arg method: held "
+          "out (the set's --weights-per-set weights) beside training (--weights, "
+          "default the shipped weights, learnt on every set) and each other --method's FT; "
+          "with --json, the same "
+          "numbers in OUT.per_class.json");
       app.add_option("--weights-per-set", a->weights_per_set,
                      "the held-out weights of --per-class: a line per set, 'SET WEIGHTS', as "
                      "`argtool tune --fold-weights FILE` writes them (each learnt on the other "
@@ -337,15 +340,15 @@ const bool registered = argtool::register_command(
             if (!models[i].error.empty())
               std::fprintf(stderr, "failed: %s: %s: %s\n", name.c_str(), set.models[i].path.c_str(),
                            models[i].error.c_str());
+          std::vector<std::pair<std::string, arg::RetrievalScores>> others;
+          std::optional<arg::RetrievalScores> arg_scores;
           for (const std::string& method : a->methods) {
             MethodResult r = run_method(method, models, set, *a);
             const auto& s = r.scores;
-            if (a->per_class && method == "arg") {
-              const argtool::PerClassColumns columns =
-                  per_class_columns(name, set, models, s, folds, *a);
-              per_class_tables.push_back(argtool::per_class_text(columns));
-              per_class.push_back(argtool::per_class_json(columns));
-            }
+            if (method == "arg")
+              arg_scores = s;
+            else
+              others.emplace_back(method, s);
             const double seconds = r.seconds + prepare_s;
             std::snprintf(line, sizeof line,
                           "%-10s %-7s %6zu %6zu %6.3f %6.3f %6.3f %6.3f %6.3f %6.3f %9.2f %9.2f "
@@ -378,6 +381,13 @@ const bool registered = argtool::register_command(
                               {"precision_at_recall", s.precision_at_recall},
                               {"ft_per_class", per_class}});
             if (labels == a->labels.front()) plot.push_back({method, s.precision_at_recall});
+          }
+          if (a->per_class) {
+            argtool::PerClassColumns columns =
+                per_class_columns(name, set, models, *arg_scores, folds, *a);
+            columns.methods = others;
+            per_class_tables.push_back(argtool::per_class_text(columns));
+            per_class.push_back(argtool::per_class_json(columns));
           }
           for (const std::string& query_file : a->queries) {
             const arg::LabelSet query_set =

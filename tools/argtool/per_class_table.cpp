@@ -39,8 +39,14 @@ std::string per_class_text(const PerClassColumns& k) {
   std::snprintf(buf, sizeof buf, "%-*s %5s %8s %8s %9s %9s", int(name_width), "class", "size",
                 "held NN", "held FT", "train NN", "train FT");
   out += buf;
-  for (const auto& p : k.peers) {
-    std::snprintf(buf, sizeof buf, " %7s", (peer_heading(p.first) + " FT").c_str());
+  // The other methods' columns, then the peers', each as wide as its heading.
+  std::vector<std::string> headings;
+  for (const auto& m : k.methods) headings.push_back(m.first + " FT");
+  for (const auto& p : k.peers) headings.push_back(peer_heading(p.first) + " FT");
+  std::vector<int> widths;
+  for (const std::string& h : headings) {
+    widths.push_back(std::max(7, int(h.size())));
+    std::snprintf(buf, sizeof buf, " %*s", widths.back(), h.c_str());
     out += buf;
   }
   out += '\n';
@@ -51,11 +57,13 @@ std::string per_class_text(const PerClassColumns& k) {
     out += " " + cell(shown && k.held_out.has_value(), hnn, 8) + " " +
            cell(shown && k.held_out.has_value(), hft, 8);
     out += " " + cell(shown, tnn, 9) + " " + cell(shown, tft, 9);
-    for (double ft : peer_ft) out += " " + cell(shown, ft, 7);
+    for (std::size_t i = 0; i < peer_ft.size(); ++i)
+      out += " " + cell(shown, peer_ft[i], widths[i]);
     out += '\n';
   };
   for (std::size_t c = 0; c < labels.classes.size(); ++c) {
     std::vector<double> peer_ft;
+    for (const auto& m : k.methods) peer_ft.push_back(m.second.ft_per_class[c]);
     for (const auto& p : k.peers) peer_ft.push_back(p.second.ft_per_class[c]);
     const double hnn = k.held_out ? k.held_out->nn_per_class[c] : 0;
     const double hft = k.held_out ? k.held_out->ft_per_class[c] : 0;
@@ -63,6 +71,7 @@ std::string per_class_text(const PerClassColumns& k) {
         k.training.nn_per_class[c], k.training.ft_per_class[c], peer_ft);
   }
   std::vector<double> peer_ft;
+  for (const auto& m : k.methods) peer_ft.push_back(m.second.ft);
   for (const auto& p : k.peers) peer_ft.push_back(p.second.ft);
   row("all", int(labels.class_of.size()), true, k.held_out ? k.held_out->nn : 0,
       k.held_out ? k.held_out->ft : 0, k.training.nn, k.training.ft, peer_ft);
@@ -76,7 +85,9 @@ nlohmann::json per_class_json(const PerClassColumns& k) {
   nlohmann::json classes = nlohmann::json::array();
   for (std::size_t c = 0; c < labels.classes.size(); ++c) {
     const bool shown = k.training.queries_per_class[c] > 0;
-    nlohmann::json peers = nlohmann::json::object();
+    nlohmann::json methods = nlohmann::json::object(), peers = nlohmann::json::object();
+    for (const auto& m : k.methods)
+      methods[m.first] = scores(shown, m.second.nn_per_class[c], m.second.ft_per_class[c]);
     for (const auto& p : k.peers)
       peers[p.first] = scores(shown, p.second.nn_per_class[c], p.second.ft_per_class[c]);
     classes.push_back(
@@ -86,9 +97,11 @@ nlohmann::json per_class_json(const PerClassColumns& k) {
          {"training", scores(shown, k.training.nn_per_class[c], k.training.ft_per_class[c])},
          {"held_out", scores(shown && k.held_out, k.held_out ? k.held_out->nn_per_class[c] : 0,
                              k.held_out ? k.held_out->ft_per_class[c] : 0)},
+         {"methods", methods},
          {"peers", peers}});
   }
-  nlohmann::json peers = nlohmann::json::object();
+  nlohmann::json methods = nlohmann::json::object(), peers = nlohmann::json::object();
+  for (const auto& m : k.methods) methods[m.first] = scores(true, m.second.nn, m.second.ft);
   for (const auto& p : k.peers) peers[p.first] = scores(true, p.second.nn, p.second.ft);
   return {{"set", k.set},
           {"training_weights", k.training_weights},
@@ -100,6 +113,7 @@ nlohmann::json per_class_json(const PerClassColumns& k) {
             {"training", scores(true, k.training.nn, k.training.ft)},
             {"held_out", scores(bool(k.held_out), k.held_out ? k.held_out->nn : 0,
                                 k.held_out ? k.held_out->ft : 0)},
+            {"methods", methods},
             {"peers", peers}}}};
 }
 
