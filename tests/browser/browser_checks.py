@@ -70,6 +70,21 @@ class Browser:
         self.wait(EC.staleness_of(old))
         self.wait(EC.presence_of_element_located((By.CSS_SELECTOR, ready)))
 
+    def upload(self, path: Path, ready: str) -> None:
+        """Sends a file from the upload page and waits for the answer's element (CSS selector).
+        Tried up to three times on an error of the driver itself: on a loaded machine Chromium
+        has answered "node does not belong to the document" for the file input it had just found
+        (the page swapped under the driver); a page that is wrong fails the checks after it."""
+        for attempt in range(3):
+            try:
+                self.open("upload", "#mesh")
+                self.d.find_element(By.ID, "mesh").send_keys(str(path))
+                self.click_to(self.d.find_element(By.CSS_SELECTOR, "#upload button"), ready)
+                return
+            except WebDriverException:
+                if attempt == 2:
+                    raise
+
     def images_loaded(self, selector: str) -> int:
         """Waits until every image matching the selector is done loading; returns how many loaded
         (a broken image is done but has no width)."""
@@ -244,9 +259,7 @@ class Browser:
         # The table keeps the file's name; the file is where the catalogue was generated.
         path = (self.models_dir / model["file"]).resolve()
         expect(path.is_file(), f"the model's file {path} is gone")
-        self.open("upload", "#mesh")
-        self.d.find_element(By.ID, "mesh").send_keys(str(path))
-        self.click_to(self.d.find_element(By.CSS_SELECTOR, "#upload button"), "#ranked")
+        self.upload(path, "#ranked")
         self.expect_query_first(model)
 
     def server_message(self) -> Tuple[str, str]:
@@ -263,9 +276,7 @@ class Browser:
         with tempfile.TemporaryDirectory() as scratch:
             bad = Path(scratch) / "broken.off"
             bad.write_bytes(BAD_MESH)
-            self.open("upload", "#mesh")
-            self.d.find_element(By.ID, "mesh").send_keys(str(bad))
-            self.click_to(self.d.find_element(By.CSS_SELECTOR, "#upload button"), "#error")
+            self.upload(bad, "#error")
         shown = self.d.find_element(By.ID, "error").text
         state = self.d.find_element(By.ID, "sqlstate").text
         expect(shown == f"broken.off: {message}", f"the page says {shown!r}; the server said {message!r}")
