@@ -2,14 +2,13 @@
 
 from __future__ import annotations
 
-import subprocess
 import tempfile
 import threading
 from collections import OrderedDict
 from pathlib import Path
 from typing import Tuple
 
-from viewdata import ARGTOOL, TIMEOUT, ViewUnavailable
+from viewdata import TIMEOUT, run_argtool
 
 KEEP = 8
 _cache: "OrderedDict[Tuple[int, int, str, int], bytes]" = OrderedDict()
@@ -34,16 +33,10 @@ def render(a: Tuple[int, str, bytes], b: Tuple[int, str, bytes], weights: str, l
             path.write_bytes(mesh)
             paths.append(str(path))
         png = Path(scratch) / "pair.png"
-        try:
-            done = subprocess.run([ARGTOOL, "render-match", *paths, "-o", str(png), "--weights", weights,
-                                   "--level", str(level), "--size", str(size)],
-                                  capture_output=True, text=True, timeout=TIMEOUT)
-        except subprocess.TimeoutExpired:
-            raise ViewUnavailable(f"the picture of models {a[0]} and {b[0]} took more than {TIMEOUT} s",
-                                  503) from None
-        if done.returncode != 0:
-            lines = (done.stderr.strip() or done.stdout.strip() or f"exit status {done.returncode}").splitlines()
-            raise ViewUnavailable(f"models {a[0]} and {b[0]} cannot be drawn: {lines[-1]}", 422)
+        run_argtool(["render-match", *paths, "-o", str(png), "--weights", weights, "--level", str(level),
+                     "--size", str(size)],
+                    f"the picture of models {a[0]} and {b[0]} took more than {TIMEOUT} s",
+                    f"models {a[0]} and {b[0]} cannot be drawn")
         data = png.read_bytes()
     with _lock:
         _cache[key] = data

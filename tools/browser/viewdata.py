@@ -8,7 +8,7 @@ import tempfile
 import threading
 from collections import OrderedDict
 from pathlib import Path
-from typing import Optional, Tuple
+from typing import List, Optional, Tuple
 
 HERE = Path(__file__).resolve().parent
 # server.sh sets it from BUILD_DIR; the default is the repository's build folder.
@@ -29,6 +29,20 @@ class ViewUnavailable(Exception):
         super().__init__(message)
         self.message = message
         self.status_code = status_code
+
+
+def run_argtool(args: List[str], slow: str, failed: str) -> None:
+    """Runs argtool with ARGS; a run over TIMEOUT raises ViewUnavailable(SLOW, 503), a failure
+    ViewUnavailable(FAILED + ": " + argtool's last line), 413 when the model is too large to
+    display and 422 otherwise."""
+    try:
+        done = subprocess.run([ARGTOOL, *args], capture_output=True, text=True, timeout=TIMEOUT)
+    except subprocess.TimeoutExpired:
+        raise ViewUnavailable(slow, 503) from None
+    if done.returncode != 0:
+        lines = (done.stderr.strip() or done.stdout.strip() or f"exit status {done.returncode}").splitlines()
+        why = lines[-1]
+        raise ViewUnavailable(f"{failed}: {why}", 413 if "too large to display" in why else 422)
 
 
 _cache: "OrderedDict[Tuple[int, int], bytes]" = OrderedDict()
@@ -54,18 +68,9 @@ def convert(model_id: int, file: str, mesh: Optional[bytes], triangles: Optional
         source = Path(scratch) / f"model{Path(file or '').suffix.lower() or '.off'}"
         target = Path(scratch) / "view.json"
         source.write_bytes(mesh)
-        try:
-            done = subprocess.run([ARGTOOL, "view-data", str(source), "-o", str(target),
-                                   "--max-triangles", str(MAX_TRIANGLES)],
-                                  capture_output=True, text=True, timeout=TIMEOUT)
-        except subprocess.TimeoutExpired:
-            raise ViewUnavailable(f"model {model_id} took more than {TIMEOUT} s to prepare for the 3D view",
-                                  503) from None
-        if done.returncode != 0:
-            lines = (done.stderr.strip() or done.stdout.strip() or f"exit status {done.returncode}").splitlines()
-            why = lines[-1]
-            status = 413 if "too large to display" in why else 422
-            raise ViewUnavailable(f"model {model_id} cannot be shown in 3D: {why}", status)
+        run_argtool(["view-data", str(source), "-o", str(target), "--max-triangles", str(MAX_TRIANGLES)],
+                    f"model {model_id} took more than {TIMEOUT} s to prepare for the 3D view",
+                    f"model {model_id} cannot be shown in 3D")
         data = target.read_bytes()
     with _lock:
         _cache[key] = data
