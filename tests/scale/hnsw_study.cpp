@@ -25,6 +25,7 @@
 #include "common/random.hpp"
 #include "graph/serialize.hpp"
 #include "match/similarity.hpp"
+#include "sampled_centres.hpp"
 #include "search/coarse_sketch.hpp"
 #include "search/sketch_cells.hpp"
 
@@ -207,16 +208,7 @@ int main(int argc, char** argv) {
   // The inverted file as the index searches it: centres, probed cells' rows by the coarse
   // distance, the 4 x 25 nearest by the sketch distance, the 25 nearest of those to SIM.
   const std::size_t cells = std::size_t(std::ceil(std::sqrt(double(n))));
-  std::vector<std::size_t> ids(n);
-  std::iota(ids.begin(), ids.end(), 0);
-  arg::SeededRandom random(1);
-  for (std::size_t i = n; i > 1; --i) std::swap(ids[i - 1], ids[random.bits() % i]);
-  ids.resize(std::min(n, 20 * cells));
-  std::vector<arg::ShapeSketch> sample;
-  for (std::size_t id : ids) sample.push_back(sketch[id]);
-  std::vector<arg::ShapeSketch> centres;
-  for (std::size_t c : arg::choose_cell_centres(sample.data(), sample.size(), cells, 0x41524749))
-    centres.push_back(sample[c]);
+  const std::vector<arg::ShapeSketch> centres = study::sampled_centres(sketch, cells);
   const std::vector<arg::CoarseQuery> coarse = arg::coarse_centres(centres.data(), centres.size());
   std::vector<std::size_t> cell(n);
   arg::parallel_for(n, threads, [&](std::size_t j) {

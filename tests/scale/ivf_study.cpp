@@ -23,6 +23,7 @@
 #include "common/random.hpp"
 #include "graph/serialize.hpp"
 #include "match/similarity.hpp"
+#include "sampled_centres.hpp"
 #include "search/sketch_cells.hpp"
 
 namespace {
@@ -87,17 +88,7 @@ int main(int argc, char** argv) {
       "cells  probes  rows read   recall@10 among the first S = 50 / 100 / 200 (%zu queries)\n",
       nq);
   for (std::size_t cells : {root / 2, root, 2 * root}) {
-    // The build's sample: 20 a cell, uniformly at random.
-    std::vector<std::size_t> ids(n);
-    std::iota(ids.begin(), ids.end(), 0);
-    arg::SeededRandom random(1);
-    for (std::size_t i = n; i > 1; --i) std::swap(ids[i - 1], ids[random.bits() % i]);
-    ids.resize(std::min(n, 20 * cells));
-    std::vector<arg::ShapeSketch> sample;
-    for (std::size_t id : ids) sample.push_back(sketch[id]);
-    std::vector<arg::ShapeSketch> centres;
-    for (std::size_t c : arg::choose_cell_centres(sample.data(), sample.size(), cells, 0x41524749))
-      centres.push_back(sample[c]);
+    const std::vector<arg::ShapeSketch> centres = study::sampled_centres(sketch, cells);
     std::vector<std::size_t> cell(n);
     arg::parallel_for(n, threads, [&](std::size_t j) {
       cell[j] = arg::nearest_cell(sketch[j], centres.data(), centres.size());
