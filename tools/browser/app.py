@@ -48,6 +48,17 @@ def rows_wanted(value: str, total: int) -> int:
         return DEFAULT_K
 
 
+def model_with_mesh(conn: psycopg.Connection[Any], model_id: int, without: str) -> Dict[str, Any]:
+    """The catalogue's row of a model that has a mesh; NotFound otherwise (WITHOUT ends the
+    message for a model without one: what cannot be done)."""
+    row = catalogue.model(conn, model_id)
+    if row is None:
+        raise errors.NotFound(f"there is no model {model_id} in the catalogue")
+    if row["descr"] is None:
+        raise errors.NotFound(f"model {model_id} has no mesh, so {without}")
+    return row
+
+
 def ranking_form(conn: psycopg.Connection[Any], params: Mapping[str, str]) -> Dict[str, Any]:
     """The filters and k of a ranking request, with the choices the form offers."""
     total = catalogue.count(conn)
@@ -164,11 +175,7 @@ def graph(model_id: int, level: int = 2, mark: int = -1) -> Response:
 @app.get("/object/{model_id}/similar", response_class=HTMLResponse)
 def similar(request: Request, model_id: int) -> HTMLResponse:
     with catalogue.connect() as conn:
-        query = catalogue.model(conn, model_id)
-        if query is None:
-            raise errors.NotFound(f"there is no model {model_id} in the catalogue")
-        if query["descr"] is None:
-            raise errors.NotFound(f"model {model_id} has no mesh, so nothing to rank by")
+        query = model_with_mesh(conn, model_id, "nothing to rank by")
         params = dict(request.query_params)
         form = ranking_form(conn, params)
         look = catalogue.appearance(params.get("look"))
@@ -178,13 +185,8 @@ def similar(request: Request, model_id: int) -> HTMLResponse:
 
 
 def pair_rows(conn: psycopg.Connection[Any], a_id: int, b_id: int) -> "tuple[Dict[str, Any], Dict[str, Any]]":
-    a, b = catalogue.model(conn, a_id), catalogue.model(conn, b_id)
-    for model_id, row in ((a_id, a), (b_id, b)):
-        if row is None:
-            raise errors.NotFound(f"there is no model {model_id} in the catalogue")
-        if row["descr"] is None:
-            raise errors.NotFound(f"model {model_id} has no mesh, so nothing to compare")
-    return a, b  # type: ignore[return-value]
+    return (model_with_mesh(conn, a_id, "nothing to compare"),
+            model_with_mesh(conn, b_id, "nothing to compare"))
 
 
 @app.get("/pair/{a_id}/{b_id}", response_class=HTMLResponse)
@@ -230,11 +232,7 @@ async def pair_picture_png(a_id: int, b_id: int, look: str = catalogue.DEFAULT_A
 def part(request: Request, model_id: int, level: int, node: int) -> HTMLResponse:
     """Search by a part: the models with a part like one node of this one (arg_part_match)."""
     with catalogue.connect() as conn:
-        query = catalogue.model(conn, model_id)
-        if query is None:
-            raise errors.NotFound(f"there is no model {model_id} in the catalogue")
-        if query["descr"] is None:
-            raise errors.NotFound(f"model {model_id} has no mesh, so no parts")
+        query = model_with_mesh(conn, model_id, "no parts")
         count = catalogue.node_count(conn, model_id, level)
         if not count or not 0 <= node < count:
             where = f"level {level} has nodes 0 to {count - 1}" if count else \
