@@ -20,7 +20,7 @@ RESET arg.max_triangles;
 SET arg.max_vertices = 1000;
 SELECT arg_build(mesh) FROM big;
 RESET arg.max_vertices;
--- A build whose memory estimate is over arg.max_build_memory is refused once the mesh is read.
+-- A build whose memory estimate is over arg.max_build_memory is refused from the mesh's counts.
 SET arg.max_build_memory = '16MB';
 SELECT arg_build(mesh) FROM big;
 RESET arg.max_build_memory;

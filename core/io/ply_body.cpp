@@ -170,14 +170,17 @@ void check_ply_declared_counts(std::string_view bytes, const PlyHeader& header, 
                             " bytes) but the body has " + std::to_string(body) + " bytes");
     }
   }
-  if (const PlyElement* v = header.find("vertex"); v && v->count > out.limits().max_vertices) {
+  const PlyElement* v = header.find("vertex");
+  const PlyElement* f = header.find("face");
+  if (v && v->count > out.limits().max_vertices) {
     out.fail_limit("header declares " + std::to_string(v->count) + " vertices, more than " +
                    std::to_string(out.limits().max_vertices));
   }
-  if (const PlyElement* f = header.find("face"); f && f->count > out.limits().max_triangles) {
+  if (f && f->count > out.limits().max_triangles) {
     out.fail_limit("header declares " + std::to_string(f->count) + " faces, more than " +
                    std::to_string(out.limits().max_triangles) + " triangles");
   }
+  out.declared_counts(v ? v->count : 0, f ? f->count : 0);
 }
 
 }  // namespace arg::io

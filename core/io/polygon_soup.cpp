@@ -177,6 +177,7 @@ void check_declared_counts(SoupBuilder& out, std::size_t vertices, std::size_t f
     out.fail_limit("header declares " + std::to_string(faces) + " faces, more than " +
                    std::to_string(out.limits().max_triangles) + " triangles");
   }
+  out.declared_counts(vertices, faces);
 }
 
 }  // namespace arg::io

@@ -35,6 +35,7 @@ struct PolygonSoup {
 class SoupBuilder {
  public:
   using Locate = std::function<std::string()>;
+  using DeclaredCounts = std::function<void(std::size_t vertices, std::size_t faces)>;
 
   SoupBuilder(PolygonSoup& soup, std::string format, const Limits& limits,
               const StopRequested& stop);
@@ -44,6 +45,12 @@ class SoupBuilder {
   // When true, corner indices are checked against the vertices read so far (formats whose
   // vertices come before their faces); otherwise check_indices() does it at the end.
   void set_immediate_index_check(bool on) { immediate_index_check_ = on; }
+  // The caller's check of the counts a file declares (ReadOptions::declared_counts).
+  void set_declared_counts_check(DeclaredCounts check) { declared_check_ = std::move(check); }
+  // Readers call this once they know the counts and before they allocate for them.
+  void declared_counts(std::size_t vertices, std::size_t faces) const {
+    if (declared_check_) declared_check_(vertices, faces);
+  }
 
   int add_vertex(double x, double y, double z);
   // A vertex whose coordinates follow through set_vertex (an OpenMesh importer gets the point
@@ -75,6 +82,7 @@ class SoupBuilder {
   Limits limits_;
   const StopRequested& stop_;
   Locate locate_;
+  DeclaredCounts declared_check_;
   bool immediate_index_check_ = true;
   std::size_t triangles_ = 0;
   std::size_t ticks_ = 0;
@@ -86,7 +94,8 @@ class SoupBuilder {
 
 // Rejects a header's vertex and face counts that the `left` bytes after it cannot hold (at
 // least `min_vertex_bytes` and `min_face_bytes` each) or that exceed the caps, before anything
-// is allocated for them. InputError / LimitError through `out`.
+// is allocated for them. InputError / LimitError through `out`; then the caller's check of the
+// counts (SoupBuilder::declared_counts).
 void check_declared_counts(SoupBuilder& out, std::size_t vertices, std::size_t faces,
                            std::size_t min_vertex_bytes, std::size_t min_face_bytes,
                            std::size_t left);

@@ -24,6 +24,7 @@ Mesh read_mesh(std::string_view bytes, const ReadOptions& options, ReadReport* r
   }
   io::PolygonSoup soup;
   io::SoupBuilder builder(soup, format_name(report.format), limits, options.stop);
+  builder.set_declared_counts_check(options.declared_counts);
   switch (report.format) {
     case MeshFormat::Off:
       io::read_off(bytes, builder, report);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,6 +27,12 @@ struct ReadOptions {
   StopRequested stop;
   // The format, when the caller knows it; Unknown means detect it from the content.
   MeshFormat format = MeshFormat::Unknown;
+  // Called once the file has said how large it is, before the reader allocates for it: the
+  // counts a PLY or OFF header declares, a binary STL's triangles (vertices taken as half of
+  // them, a closed surface's count), an OBJ's after its first scan. Faces are polygons as
+  // stored, so at most the triangles to come. It may throw to refuse the input (a build's
+  // memory estimate does); not called for GLB, whose counts are spread over its accessors.
+  std::function<void(std::size_t vertices, std::size_t faces)> declared_counts;
 };
 
 // What the reader saw and did, for `argtool info` and error reports.

@@ -145,6 +145,7 @@ ObjScan scan_obj(std::string_view bytes, const Limits& limits) {
 
 void read_obj(std::string_view bytes, SoupBuilder& out, ReadReport& report) {
   ObjScan scan = scan_obj(bytes, out.limits());
+  out.declared_counts(scan.vertices, scan.faces);
   report.variant = "text";
   MemoryStreamBuf buffer(std::move(scan.pieces));
   auto where = [&] {

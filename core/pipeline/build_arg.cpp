@@ -182,6 +182,11 @@ std::string build_arg_bytes(std::string_view mesh_bytes, std::string_view textur
   read.limits = limits;
   read.texture = texture;
   read.stop = bounded;
+  // Refused from what the file declares, before the reader allocates for it; checked again
+  // below on the counts read (a PLY's polygons become more triangles than its faces).
+  read.declared_counts = [&](std::size_t vertices, std::size_t faces) {
+    check_build_memory(vertices, faces, options, limits.max_build_bytes);
+  };
   Mesh mesh = read_mesh(mesh_bytes, read, &rep.read);
   double read_ms = clock.lap();
   // Refused before the build's large allocations, as soon as the counts are known.
