@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 
 namespace arg {
 
@@ -76,13 +78,13 @@ void rank_row(const double* row, int n, int skip, const std::vector<bool>& valid
   });
 }
 
-// Scores a row of `distance` (n entries, one per model of the set) per query. When the queries
-// are the set's own models, query q is model q: it is left out of its own ranking and of the
-// count of models its class holds.
+// Scores a row of `distance` (n entries, one per model of the set) per query. A query that is
+// one of the set's models (query q is model `self[q]`; self empty: none is) is left out of its
+// own ranking and of the count of models its class holds.
 RetrievalScores score_rows(const std::vector<double>& distance, const std::vector<int>& query_label,
                            const std::vector<int>& label, int classes,
                            const std::vector<bool>& query_valid_in,
-                           const std::vector<bool>& valid_in, bool queries_are_the_set) {
+                           const std::vector<bool>& valid_in, const std::vector<int>& self_of) {
   const int q_count = int(query_label.size()), n = int(label.size());
   const std::vector<bool> valid =
       valid_in.empty() ? std::vector<bool>(std::size_t(n), true) : valid_in;
@@ -99,7 +101,7 @@ RetrievalScores score_rows(const std::vector<double>& distance, const std::vecto
   int counted = 0;
   for (int q = 0; q < q_count; ++q) {
     const int c = query_label[std::size_t(q)];
-    const int self = queries_are_the_set ? q : -1;
+    const int self = self_of.empty() ? -1 : self_of[std::size_t(q)];
     const int relevant =
         c >= 0 && c < classes ? class_size[std::size_t(c)] - (self >= 0 ? 1 : 0) : 0;
     if (relevant <= 0) continue;  // a class of one has nothing to find
@@ -119,14 +121,22 @@ RetrievalScores score_rows(const std::vector<double>& distance, const std::vecto
 
 RetrievalScores retrieval_scores(const std::vector<double>& distance, const std::vector<int>& label,
                                  int classes, const std::vector<bool>& valid) {
-  return score_rows(distance, label, label, classes, valid, valid, true);
+  std::vector<int> self(label.size());
+  std::iota(self.begin(), self.end(), 0);
+  return score_rows(distance, label, label, classes, valid, valid, self);
 }
 
 RetrievalScores query_scores(const std::vector<double>& distance,
                              const std::vector<int>& query_label, const std::vector<int>& label,
                              int classes, const std::vector<bool>& query_valid,
-                             const std::vector<bool>& valid) {
-  return score_rows(distance, query_label, label, classes, query_valid, valid, false);
+                             const std::vector<bool>& valid, const std::vector<int>& query_self) {
+  if (!query_self.empty() && query_self.size() != query_label.size())
+    throw std::invalid_argument("query_scores: one query_self entry per query");
+  for (int m : query_self)
+    if (m < -1 || m >= int(label.size()))
+      throw std::invalid_argument("query_scores: query_self " + std::to_string(m) +
+                                  " is no model of the set");
+  return score_rows(distance, query_label, label, classes, query_valid, valid, query_self);
 }
 
 }  // namespace arg

@@ -33,10 +33,14 @@ RetrievalScores retrieval_scores(const std::vector<double>& distance, const std:
 // index); its relevant models are those of its class in the collection (class size C, the
 // query's own original among them), so FT counts hits in the first C results, ST in 2C, and
 // DCG and mAP are taken over the C relevant models. An invalid query is a miss; an invalid
-// model ranks last.
+// model ranks last. `query_self`, when given (one entry per query), names a model of the set
+// each query stands for (-1: none), as a part of a model queried where it lies: that model is
+// left out of the query's ranking and of its class, as in retrieval_scores. Throws
+// std::invalid_argument on a size or index that does not fit.
 RetrievalScores query_scores(const std::vector<double>& distance,
                              const std::vector<int>& query_label, const std::vector<int>& label,
                              int classes, const std::vector<bool>& query_valid = {},
-                             const std::vector<bool>& valid = {});
+                             const std::vector<bool>& valid = {},
+                             const std::vector<int>& query_self = {});
 
 }  // namespace arg

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # argtool as a user's script runs it: fast start without images, images loaded when needed,
-# progress in a log file as plain lines, ingest's rows. Prints TAP lines.
+# progress in a log file as plain lines, ingest's rows, part-eval's figures. Prints TAP
+# lines.
 #
 #   tests/argtool/cli.sh [ARGTOOL]      (default: build/argtool)
 set -uo pipefail
@@ -197,4 +198,40 @@ check "ingest exits 1 on a skipped file with --strict, and when every file is sk
 "$argtool" ingest "$work/ing" --table finds 2> /dev/null | sed -n '1p;$p' > "$work/script.txt"
 check "ingest --table writes a psql script: COPY with the columns, the rows, \\." \
   test "$(cat "$work/script.txt")" = $'COPY finds ("file", "descr") FROM STDIN;\n\\.'
+
+# 9. part-eval: a part cut from each model at a node queries a tiny set. Two figures and two
+# octopuses: part matching (the arg preset, the part's own graph as the query) must find each
+# part's source first, which SIM of the part as a whole shape does not.
+"$argtool" gen --out "$work/pe" --per-class 2 --class human --class octopus --labels \
+  --resolution 32 > /dev/null 2>&1
+"$argtool" part-eval --labels "$work/pe/labels.csv" --level 2 --min-faces 50 --threads 2 \
+  --json "$work/pe.json" > "$work/pe.txt" 2> "$work/pe.err"
+check "part-eval: every row's queries, NN, FT, mAP and shares in range, both tables alike" \
+  python3 - "$work/pe.json" "$work/pe.txt" << 'PY'
+import json, sys
+rows = json.load(open(sys.argv[1]))
+table = [l.split() for l in open(sys.argv[2]).read().splitlines()[1:]]
+assert len(rows) == 7 and len(table) == 7, (len(rows), len(table))
+for r, t in zip(rows, table):
+    assert r["set"] == "pe" and r["queries"] == 4 and r["sampled"] == 4, r
+    for k in ("nn", "ft", "map", "matched", "source_matched", "source_first"):
+        if k in r:
+            assert 0 <= r[k] <= 1, (k, r)
+    assert r["map"] > 0, r
+    assert [f"{r[k]:.3f}" for k in ("nn", "ft", "map")] == t[-7:-4], (r, t)
+PY
+check "part-eval: part matching ranks each part's source first, whole-shape SIM does not" \
+  python3 - "$work/pe.json" << 'PY'
+import json, sys
+rows = {(r["query"], r["method"]): r for r in json.load(open(sys.argv[1]))}
+assert rows[("cut part, level 0", "part arg")]["source_first"] == 1, rows
+assert rows[("cut part as a whole", "SIM")]["source_first"] < 1, rows
+# The node queried where it lies leaves its model out; the whole model finds its class.
+assert rows[("its whole model", "SIM")]["nn"] == 1, rows
+PY
+"$argtool" part-eval --labels "$work/pe/labels.csv" --level 9 > /dev/null 2> "$work/pe9.err"
+status=$?
+check "part-eval: a level no model has fails, saying why" \
+  bash -c "test $status -ne 0 && grep -q 'no level 9' '$work/pe9.err' &&
+    grep -q 'no model gave a part query' '$work/pe9.err'"
 echo "1..$n"

@@ -1,6 +1,8 @@
 // PSB retrieval measures on tiny hand-made rankings with known answers, and the label CSV.
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 #include "common/errors.hpp"
 #include "eval/label_file.hpp"
 #include "eval/retrieval_metrics.hpp"
@@ -64,6 +66,39 @@ TEST(RetrievalMetrics, AFailedModelIsAMissAndRanksLast) {
   RetrievalScores s = retrieval_scores(d, label, 2, {true, false, true, true});
   // Query 1 failed (zero); query 0 finds only the failed 1, ranked last: NN 0; 2 and 3 fine.
   EXPECT_NEAR(s.nn, 0.5, 1e-12);
+}
+
+TEST(RetrievalMetrics, QueriesFromOutsideRankEveryModelOfTheSet) {
+  // Set: class 0 = {0, 1, 2}, class 1 = {3, 4}. Two part queries: the first (class 0) ranks
+  // 0 3 1 4 2, the second (class 1) ranks 3 0 1 2 4.
+  const std::vector<int> label = {0, 0, 0, 1, 1};
+  const std::vector<double> d = {1, 3, 5, 2, 4,   // query 0: ranks of models 0..4
+                                 2, 3, 4, 1, 5};  // query 1
+  const RetrievalScores s = query_scores(d, {0, 1}, label, 2);
+  // Query 0 (3 relevant, hits at ranks 1, 3, 5): NN 1; FT 2/3 (ranks 1 and 3 of the first 3);
+  // AP (1/1 + 2/3 + 3/5) / 3 = 0.7556. Query 1 (2 relevant, hits at ranks 1 and 5): NN 1;
+  // FT 1/2; AP (1/1 + 2/5) / 2 = 0.7.
+  EXPECT_NEAR(s.nn, 1.0, 1e-12);
+  EXPECT_NEAR(s.ft, (2.0 / 3 + 0.5) / 2, 1e-12);
+  EXPECT_NEAR(s.map, ((1.0 + 2.0 / 3 + 3.0 / 5) / 3 + (1.0 + 2.0 / 5) / 2) / 2, 1e-12);
+}
+
+TEST(RetrievalMetrics, AQueryStandingForAModelLeavesItOut) {
+  // The same distances, each query now a part of a model queried where it lies: query 0 is
+  // model 0 and query 1 model 4, left out of their rankings and of their classes.
+  const std::vector<int> label = {0, 0, 0, 1, 1};
+  const std::vector<double> d = {1, 3, 5, 2, 4, 2, 3, 4, 1, 5};
+  const RetrievalScores s = query_scores(d, {0, 1}, label, 2, {}, {}, {0, 4});
+  // Query 0 ranks 3 1 4 2 (2 relevant, hits at ranks 2 and 4): NN 0, FT 1/2, AP (1/2 + 2/4)
+  // / 2 = 0.5. Query 1 ranks 3 0 1 2 (1 relevant, at rank 1): NN 1, FT 1, AP 1.
+  EXPECT_NEAR(s.nn, 0.5, 1e-12);
+  EXPECT_NEAR(s.ft, 0.75, 1e-12);
+  EXPECT_NEAR(s.map, 0.75, 1e-12);
+  // -1 stands for no model: the scores of the plain call.
+  const RetrievalScores plain = query_scores(d, {0, 1}, label, 2, {}, {}, {-1, -1});
+  EXPECT_NEAR(plain.map, query_scores(d, {0, 1}, label, 2).map, 1e-15);
+  EXPECT_THROW(query_scores(d, {0, 1}, label, 2, {}, {}, {0}), std::invalid_argument);
+  EXPECT_THROW(query_scores(d, {0, 1}, label, 2, {}, {}, {0, 5}), std::invalid_argument);
 }
 
 TEST(LabelCsv, ReadsModelsAndClasses) {

@@ -8,6 +8,7 @@
 #include "command_registry.hpp"
 #include "load_arg.hpp"
 #include "pipeline/node_positions.hpp"
+#include "pipeline/node_region.hpp"
 #include "render_input.hpp"
 
 namespace {
@@ -81,14 +82,10 @@ int run_view_data(const ViewDataArgs& a) {
       out += std::to_string(i % 2 ? level.edges[i / 2].second : level.edges[i / 2].first);
     });
     out += ',';
-    // The node owning each face's middle (mu at the mean of its corners), for colouring a
-    // node's surface and for telling which node a click hit.
-    put_array(out, "face_nodes", nf, [&](std::size_t f) {
-      const double mu = (p.mu[std::size_t(m.F(long(f), 0))] + p.mu[std::size_t(m.F(long(f), 1))] +
-                         p.mu[std::size_t(m.F(long(f), 2))]) /
-                        3;
-      out += std::to_string(arg::node_at(p, int(r), int(f), mu));
-    });
+    // The node owning each face's middle, for colouring a node's surface and for telling
+    // which node a click hit.
+    put_array(out, "face_nodes", nf,
+              [&](std::size_t f) { out += std::to_string(arg::face_node(p, int(r), int(f))); });
     out += '}';
   }
   out += "]}\n";
