@@ -262,6 +262,23 @@ class Browser:
         self.upload(path, "#ranked")
         self.expect_query_first(model)
 
+    def thumbnail_stands_upright(self) -> None:
+        # A standing figure carries its torso, arms and head above thin legs: upright, its
+        # pixels' centre of mass lies above the middle of its height; upside down, below.
+        figures = [m for m in self.models if m["class"] == "human"]
+        expect(len(figures) > 0, "the sample has no standing figure")
+        for model in figures:
+            with urllib.request.urlopen(self.url + f"thumbnail/{model['id']}.png", timeout=WAIT) as response:
+                picture = Image.open(io.BytesIO(response.read())).convert("L")
+            # The rows of the pixels that are not the white background.
+            width = picture.width
+            rows = [i // width for i, v in enumerate(picture.getdata()) if v < 250]
+            expect(len(rows) > 100, f"{model['model_id']}'s thumbnail is blank")
+            top, bottom = min(rows), max(rows)
+            share = (sum(rows) / len(rows) - top) / max(bottom - top, 1)  # 0 at the top, 1 at the bottom
+            expect(share < 0.5, f"{model['model_id']} stands on its head in its thumbnail: its centre "
+                   f"of mass is at {share:.2f} of its height from the top")
+
     def server_message(self) -> Tuple[str, str]:
         """What the database itself says of BAD_MESH: (SQLSTATE, message)."""
         with psycopg.connect() as conn:
@@ -463,6 +480,7 @@ class Browser:
             ("\"more like this\" of every model is ordered by SIM in [0, 1]", self.ranking_is_ordered),
             ("\"more like this\" filtered by class lists that class, the query first", self.more_like_this_filtered),
             ("an upload of a known model finds itself first with SIM 0", self.upload_finds_itself),
+            ("a standing figure's thumbnail stands upright (its mass above the middle)", self.thumbnail_stands_upright),
             ("a bad upload shows the server's message and SQLSTATE, no traceback", self.bad_upload_shows_server_message),
             ("a bad upload is answered with HTTP 4xx", self.bad_upload_is_4xx),
             ("an unknown object is a 404 page", self.unknown_object_is_404),
