@@ -262,6 +262,28 @@ class Browser:
         self.upload(path, "#ranked")
         self.expect_query_first(model)
 
+    def upload_shows_itself_in_3d(self) -> None:
+        model = self.models[len(self.models) // 3]
+        self.upload((self.models_dir / model["file"]).resolve(), "#ranked")
+        self.wait(lambda d: d.find_element(By.ID, "view3d").get_attribute("data-state") != "loading")
+        box = self.d.find_element(By.ID, "view3d")
+        expect(box.get_attribute("data-state") == "ready",
+               f"the upload's 3D view did not draw: {self.d.find_element(By.ID, 'view-message').text!r}")
+        canvas = box.find_element(By.TAG_NAME, "canvas")
+        before = self.picture(canvas)
+        grey = ImageStat.Stat(before.convert("L"))
+        expect(grey.stddev[0] > 10, f"the upload's 3D view looks blank: grey level spread {grey.stddev[0]:.1f}")
+        # Its levels come with its view: as many as the catalogue's copy of the same model has.
+        levels = [o.text for o in Select(self.d.find_element(By.ID, "view-level")).options]
+        with psycopg.connect() as conn:
+            count = conn.execute("SELECT count(DISTINCT level) FROM objects o, arg_nodes(o.descr) n "
+                                 "WHERE o.id = %s", (model["id"],)).fetchone()
+        expect(count is not None and levels == [str(l) for l in range(count[0])],
+               f"the upload's view offers levels {levels}; the model has {count}")
+        ActionChains(self.d).move_to_element(canvas).click_and_hold().move_by_offset(90, 40) \
+            .release().perform()
+        self.redraw(canvas, before, "after a drag on the upload's view")
+
     def thumbnail_stands_upright(self) -> None:
         # A standing figure carries its torso, arms and head above thin legs: upright, its
         # pixels' centre of mass lies above the middle of its height; upside down, below.
@@ -480,6 +502,7 @@ class Browser:
             ("\"more like this\" of every model is ordered by SIM in [0, 1]", self.ranking_is_ordered),
             ("\"more like this\" filtered by class lists that class, the query first", self.more_like_this_filtered),
             ("an upload of a known model finds itself first with SIM 0", self.upload_finds_itself),
+            ("an upload is shown in 3D beside its ranking, with its levels, and turns", self.upload_shows_itself_in_3d),
             ("a standing figure's thumbnail stands upright (its mass above the middle)", self.thumbnail_stands_upright),
             ("a bad upload shows the server's message and SQLSTATE, no traceback", self.bad_upload_shows_server_message),
             ("a bad upload is answered with HTTP 4xx", self.bad_upload_is_4xx),

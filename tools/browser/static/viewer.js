@@ -1,6 +1,6 @@
-// The object page's 3D view: the surface of view.json (argtool view-data) turned with the mouse,
-// shaded with its own colours, mu or its nodes at a level, the Reeb graph's nodes on demand, and
-// a click on a node's disc or on the surface picks that node (search by that part).
+// The 3D view of an object page or an upload: the surface of view.json (argtool view-data) turned
+// with the mouse, shaded with its own colours, mu or its nodes at a level, the Reeb graph's nodes
+// on demand, and a click on a node's disc or on the surface picks that node (search by that part).
 import * as THREE from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 
@@ -76,6 +76,13 @@ function upright(p, i) {
 
 function show(data) {
   axes = frameAxes(data);
+  // An upload's page does not know its levels: they come with its view.
+  if (levelChoice.options.length === 0) {
+    const want = Math.min(Number(box.dataset.level || 2), data.levels.length - 1);
+    data.levels.forEach((_, l) => {
+      levelChoice.add(new Option(String(l), String(l), l === want, l === want));
+    });
+  }
   const faces = data.faces, positions = data.positions, faceCount = faces.length / 3;
   const position = new Float32Array(faceCount * 9);
   let radius = 0;
