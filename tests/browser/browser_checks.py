@@ -284,22 +284,37 @@ class Browser:
             .release().perform()
         self.redraw(canvas, before, "after a drag on the upload's view")
 
-    def thumbnail_stands_upright(self) -> None:
-        # A standing figure carries its torso, arms and head above thin legs: upright, its
-        # pixels' centre of mass lies above the middle of its height; upside down, below.
+    @staticmethod
+    def mass_height(picture: Image.Image) -> Tuple[float, int]:
+        """Where the centre of mass of a picture's non-white pixels lies, as a share of their height
+        from the top (0 at the top, 1 at the bottom), and how many pixels there are. A standing
+        figure carries its torso, arms and head above thin legs: upright, it is under 0.5."""
+        grey = picture.convert("L")
+        rows = [i // grey.width for i, v in enumerate(grey.getdata()) if v < 250]
+        if not rows:
+            return 0.5, 0
+        top, bottom = min(rows), max(rows)
+        return (sum(rows) / len(rows) - top) / max(bottom - top, 1), len(rows)
+
+    def figures(self) -> List[Dict[str, Any]]:
         figures = [m for m in self.models if m["class"] == "human"]
         expect(len(figures) > 0, "the sample has no standing figure")
-        for model in figures:
+        return figures
+
+    def thumbnail_stands_upright(self) -> None:
+        for model in self.figures():
             with urllib.request.urlopen(self.url + f"thumbnail/{model['id']}.png", timeout=WAIT) as response:
-                picture = Image.open(io.BytesIO(response.read())).convert("L")
-            # The rows of the pixels that are not the white background.
-            width = picture.width
-            rows = [i // width for i, v in enumerate(picture.getdata()) if v < 250]
-            expect(len(rows) > 100, f"{model['model_id']}'s thumbnail is blank")
-            top, bottom = min(rows), max(rows)
-            share = (sum(rows) / len(rows) - top) / max(bottom - top, 1)  # 0 at the top, 1 at the bottom
+                share, pixels = self.mass_height(Image.open(io.BytesIO(response.read())))
+            expect(pixels > 100, f"{model['model_id']}'s thumbnail is blank")
             expect(share < 0.5, f"{model['model_id']} stands on its head in its thumbnail: its centre "
                    f"of mass is at {share:.2f} of its height from the top")
+
+    def view_starts_upright(self) -> None:
+        model = self.figures()[0]
+        share, pixels = self.mass_height(self.picture(self.view_ready(model)))
+        expect(pixels > 100, f"the 3D view of {model['model_id']} is blank")
+        expect(share < 0.5, f"{model['model_id']} stands on its head in the 3D view: its centre of mass "
+               f"is at {share:.2f} of its height from the top")
 
     def server_message(self) -> Tuple[str, str]:
         """What the database itself says of BAD_MESH: (SQLSTATE, message)."""
@@ -508,6 +523,7 @@ class Browser:
             ("a bad upload is answered with HTTP 4xx", self.bad_upload_is_4xx),
             ("an unknown object is a 404 page", self.unknown_object_is_404),
             ("the 3D view draws the object and turns when dragged", self.view_renders_and_turns),
+            ("the 3D view starts with a standing figure upright, as its thumbnail", self.view_starts_upright),
             ("the 3D view's graph toggle shows the level's nodes, mu colours the surface", self.view_graph_toggle),
             ("a pair page shows SIM's terms with their weights, adding up to the SIM shown", self.pair_terms_sum_to_sim),
             ("shape only, shape and colour, colour first: the order changes", self.presets_change_the_order),
