@@ -51,7 +51,7 @@ set(ARG_RENDER_SOURCES
     render/bitmap_font.cpp render/canvas.cpp render/colour_legend.cpp render/colour_map.cpp
     render/contact_sheet.cpp render/draw_shapes.cpp render/graph_overlay.cpp
     render/graph_svg.cpp render/match_picture.cpp render/rasterise_mesh.cpp
-    render/render_model.cpp render/view_camera.cpp)
+    render/render_model.cpp render/upright_frame.cpp render/view_camera.cpp)
 set(ARG_EVAL_SOURCES
     eval/baseline_descriptors.cpp eval/csv_records.cpp eval/distance_matrix_file.cpp
     eval/label_file.cpp eval/perturbations.cpp eval/pr_plot.cpp eval/quadric_decimation.cpp

@@ -262,6 +262,60 @@ class Browser:
         self.upload(path, "#ranked")
         self.expect_query_first(model)
 
+    def upload_shows_itself_in_3d(self) -> None:
+        model = self.models[len(self.models) // 3]
+        self.upload((self.models_dir / model["file"]).resolve(), "#ranked")
+        self.wait(lambda d: d.find_element(By.ID, "view3d").get_attribute("data-state") != "loading")
+        box = self.d.find_element(By.ID, "view3d")
+        expect(box.get_attribute("data-state") == "ready",
+               f"the upload's 3D view did not draw: {self.d.find_element(By.ID, 'view-message').text!r}")
+        canvas = box.find_element(By.TAG_NAME, "canvas")
+        before = self.picture(canvas)
+        grey = ImageStat.Stat(before.convert("L"))
+        expect(grey.stddev[0] > 10, f"the upload's 3D view looks blank: grey level spread {grey.stddev[0]:.1f}")
+        # Its levels come with its view: as many as the catalogue's copy of the same model has.
+        levels = [o.text for o in Select(self.d.find_element(By.ID, "view-level")).options]
+        with psycopg.connect() as conn:
+            count = conn.execute("SELECT count(DISTINCT level) FROM objects o, arg_nodes(o.descr) n "
+                                 "WHERE o.id = %s", (model["id"],)).fetchone()
+        expect(count is not None and levels == [str(l) for l in range(count[0])],
+               f"the upload's view offers levels {levels}; the model has {count}")
+        ActionChains(self.d).move_to_element(canvas).click_and_hold().move_by_offset(90, 40) \
+            .release().perform()
+        self.redraw(canvas, before, "after a drag on the upload's view")
+
+    @staticmethod
+    def mass_height(picture: Image.Image) -> Tuple[float, int]:
+        """Where the centre of mass of a picture's non-white pixels lies, as a share of their height
+        from the top (0 at the top, 1 at the bottom), and how many pixels there are. A standing
+        figure carries its torso, arms and head above thin legs: upright, it is under 0.5."""
+        grey = picture.convert("L")
+        rows = [i // grey.width for i, v in enumerate(grey.getdata()) if v < 250]
+        if not rows:
+            return 0.5, 0
+        top, bottom = min(rows), max(rows)
+        return (sum(rows) / len(rows) - top) / max(bottom - top, 1), len(rows)
+
+    def figures(self) -> List[Dict[str, Any]]:
+        figures = [m for m in self.models if m["class"] == "human"]
+        expect(len(figures) > 0, "the sample has no standing figure")
+        return figures
+
+    def thumbnail_stands_upright(self) -> None:
+        for model in self.figures():
+            with urllib.request.urlopen(self.url + f"thumbnail/{model['id']}.png", timeout=WAIT) as response:
+                share, pixels = self.mass_height(Image.open(io.BytesIO(response.read())))
+            expect(pixels > 100, f"{model['model_id']}'s thumbnail is blank")
+            expect(share < 0.5, f"{model['model_id']} stands on its head in its thumbnail: its centre "
+                   f"of mass is at {share:.2f} of its height from the top")
+
+    def view_starts_upright(self) -> None:
+        model = self.figures()[0]
+        share, pixels = self.mass_height(self.picture(self.view_ready(model)))
+        expect(pixels > 100, f"the 3D view of {model['model_id']} is blank")
+        expect(share < 0.5, f"{model['model_id']} stands on its head in the 3D view: its centre of mass "
+               f"is at {share:.2f} of its height from the top")
+
     def server_message(self) -> Tuple[str, str]:
         """What the database itself says of BAD_MESH: (SQLSTATE, message)."""
         with psycopg.connect() as conn:
@@ -463,10 +517,13 @@ class Browser:
             ("\"more like this\" of every model is ordered by SIM in [0, 1]", self.ranking_is_ordered),
             ("\"more like this\" filtered by class lists that class, the query first", self.more_like_this_filtered),
             ("an upload of a known model finds itself first with SIM 0", self.upload_finds_itself),
+            ("an upload is shown in 3D beside its ranking, with its levels, and turns", self.upload_shows_itself_in_3d),
+            ("a standing figure's thumbnail stands upright (its mass above the middle)", self.thumbnail_stands_upright),
             ("a bad upload shows the server's message and SQLSTATE, no traceback", self.bad_upload_shows_server_message),
             ("a bad upload is answered with HTTP 4xx", self.bad_upload_is_4xx),
             ("an unknown object is a 404 page", self.unknown_object_is_404),
             ("the 3D view draws the object and turns when dragged", self.view_renders_and_turns),
+            ("the 3D view starts with a standing figure upright, as its thumbnail", self.view_starts_upright),
             ("the 3D view's graph toggle shows the level's nodes, mu colours the surface", self.view_graph_toggle),
             ("a pair page shows SIM's terms with their weights, adding up to the SIM shown", self.pair_terms_sum_to_sim),
             ("shape only, shape and colour, colour first: the order changes", self.presets_change_the_order),

@@ -10,6 +10,7 @@
 #include "plugin_libraries.hpp"
 #include "render/graph_svg.hpp"
 #include "render/render_model.hpp"
+#include "render/upright_frame.hpp"
 #include "render_input.hpp"
 
 namespace {
@@ -38,7 +39,8 @@ int run_render(const RenderArgs& a) {
   arg::RenderOptions ro;
   ro.width = ro.height = a.size;
   ro.level = a.level;
-  ro.view = arg::parse_view(a.view);
+  // "upright" depends on the surface, so it is made once the surface is there.
+  if (a.view != "upright") ro.view = arg::parse_view(a.view);
   ro.shading = arg::parse_shading(a.shading);
   ro.own_colours = a.surface == "colours";
   ro.legend = !a.no_legend && !ro.own_colours;  // a legend of mu explains mu colours only
@@ -47,6 +49,7 @@ int run_render(const RenderArgs& a) {
     throw std::runtime_error("--level " + std::to_string(a.level) + " is finer than --levels " +
                              std::to_string(a.options.levels));
   const arg::NodePositions model = arg::node_positions(argtool::read_mesh_file(a.mesh), a.options);
+  if (a.view == "upright") ro.view = arg::upright_view(arg::upright_frame(model.mesh));
   const std::size_t nodes = model.levels[std::size_t(a.level)].centre.size();
   ro.title = a.title.empty() ? std::filesystem::path(a.mesh).filename().string() + "  level " +
                                    std::to_string(a.level) + ": " + std::to_string(nodes) +
@@ -83,7 +86,10 @@ const bool registered = argtool::register_command(
       app.add_option("--size", a->size, "width and height in pixels")
           ->check(CLI::Range(64, 4096))
           ->capture_default_str();
-      app.add_option("--view", a->view, "front, side, top or AZIMUTH,ELEVATION[,ROLL] in degrees")
+      app.add_option(
+             "--view", a->view,
+             "front, side, top, AZIMUTH,ELEVATION[,ROLL] in degrees (principal axes, the longest "
+             "upright), or upright (resting on its broadest base, argtool upright)")
           ->capture_default_str();
       app.add_option("--shading", a->shading, "flat or smooth")
           ->check(CLI::IsMember({"flat", "smooth"}))

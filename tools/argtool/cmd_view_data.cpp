@@ -9,6 +9,7 @@
 #include "load_arg.hpp"
 #include "pipeline/node_positions.hpp"
 #include "pipeline/node_region.hpp"
+#include "render/upright_frame.hpp"
 #include "render_input.hpp"
 
 namespace {
@@ -51,6 +52,12 @@ int run_view_data(const ViewDataArgs& a) {
   const arg::Mesh& m = p.mesh;
   const auto nv = std::size_t(m.V.rows()), nf = std::size_t(m.F.rows());
   std::string out = "{\"format\":1,";
+  // The canonical view (argtool upright) in the same frame: the 3D view starts from it.
+  const arg::UprightFrame frame = arg::upright_frame(m);
+  put_array(out, "up", 3, [&](std::size_t i) { put_number(out, frame.up[long(i)]); });
+  out += ',';
+  put_array(out, "front", 3, [&](std::size_t i) { put_number(out, frame.front[long(i)]); });
+  out += ',';
   put_array(out, "positions", 3 * nv,
             [&](std::size_t i) { put_number(out, m.V(long(i / 3), long(i % 3))); });
   out += ',';

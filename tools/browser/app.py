@@ -272,5 +272,17 @@ async def upload(request: Request) -> HTMLResponse:
         form, rows = await run_in_threadpool(rank_upload, data, params)
     except psycopg.Error as error:
         raise errors.ServerRefused(mesh.filename, error) from error
+    # The upload in 3D beside its ranking (its view.json is made when the page asks for it).
+    view_src = f"/upload/{viewdata.keep_upload(mesh.filename, data)}/view.json" if three_installed() else None
     return page(request, "ranked.html", query=None, upload_name=mesh.filename, rows=rows,
-                action=None, **form)
+                action=None, upload_view=view_src, **form)
+
+
+@app.get("/upload/{key}/view.json")
+async def upload_view(key: str) -> Response:
+    """The 3D view's data of a recent upload; a reason as {"error": ...} when there is none."""
+    try:
+        data = await run_in_threadpool(viewdata.convert_upload, key)
+    except viewdata.ViewUnavailable as why:
+        return JSONResponse({"error": why.message}, status_code=why.status_code)
+    return Response(data, media_type="application/json", headers={"Cache-Control": "max-age=3600"})

@@ -31,12 +31,12 @@ def render_one(argtool: str, size: int, model_id: int, scratch: Path, timeout: f
         colours_path = scratch / f"{model_id}-colours.png"
         mu_path = scratch / f"{model_id}-mu.png"
         try:
-            # Both in the canonical pose (the longest principal axis upright, seen along the
-            # shortest), from one computation of mu. A blank caption: the page prints the
-            # title; the colour legend would be unreadable at this size.
+            # Both in the canonical view (resting on its broadest base, seen from its front:
+            # argtool upright), from one computation of mu. A blank caption: the page prints
+            # the title; the colour legend would be unreadable at this size.
             done = subprocess.run(
                 [argtool, "render", str(mesh_path), "-o", str(mu_path), "--colours-output", str(colours_path),
-                 "--size", str(size), "--no-legend", "--title", " "],
+                 "--size", str(size), "--view", "upright", "--no-legend", "--title", " "],
                 capture_output=True, text=True, timeout=timeout)
         except subprocess.TimeoutExpired:
             return model_id, f"argtool render took more than {timeout:.0f} s"

@@ -1,7 +1,8 @@
-"""The 3D view's data of a catalogue object: `argtool view-data` run on the mesh stored in the table, kept for reuse."""
+"""The 3D view's data of a catalogue object or an upload: `argtool view-data` run on its mesh, kept for reuse."""
 
 from __future__ import annotations
 
+import hashlib
 import os
 import subprocess
 import tempfile
@@ -20,6 +21,8 @@ MAX_TRIANGLES = int(os.environ.get("ARG_VIEW_MAX_TRIANGLES") or 500_000)
 TIMEOUT = 120
 # The last few objects' JSON, by (id, sha of the mesh): an object page reloads its view often.
 KEEP = 8
+# The last few uploads' bytes, for their 3D view: few, as each may be up to the upload's limit.
+KEEP_UPLOADS = 4
 
 
 class ViewUnavailable(Exception):
@@ -45,7 +48,8 @@ def run_argtool(args: List[str], slow: str, failed: str) -> None:
         raise ViewUnavailable(f"{failed}: {why}", 413 if "too large to display" in why else 422)
 
 
-_cache: "OrderedDict[Tuple[int, int], bytes]" = OrderedDict()
+_cache: "OrderedDict[Tuple[str, str], bytes]" = OrderedDict()
+_uploads: "OrderedDict[str, Tuple[str, bytes]]" = OrderedDict()
 _lock = threading.Lock()
 
 
@@ -56,7 +60,34 @@ def convert(model_id: int, file: str, mesh: Optional[bytes], triangles: Optional
     if triangles is not None and triangles > MAX_TRIANGLES:
         raise ViewUnavailable(f"model {model_id} is too large to display in 3D: {triangles:,} triangles, "
                               f"more than {MAX_TRIANGLES:,}", 413)
-    key = (model_id, hash(mesh))
+    return convert_bytes(f"model {model_id}", file, mesh)
+
+
+def keep_upload(file: str, mesh: bytes) -> str:
+    """Keeps an uploaded mesh for its 3D view (the last KEEP_UPLOADS) and returns its key."""
+    key = hashlib.sha256(mesh).hexdigest()[:32]
+    with _lock:
+        _uploads[key] = (file, mesh)
+        _uploads.move_to_end(key)
+        while len(_uploads) > KEEP_UPLOADS:
+            _uploads.popitem(last=False)
+    return key
+
+
+def convert_upload(key: str) -> bytes:
+    """The JSON of `argtool view-data` for an upload kept by keep_upload; ViewUnavailable (404)
+    once it is no longer kept."""
+    with _lock:
+        kept = _uploads.get(key)
+    if kept is None:
+        raise ViewUnavailable("this upload is no longer kept for the 3D view: upload it again", 404)
+    file, mesh = kept
+    return convert_bytes(f"the upload {file}", file, mesh)
+
+
+def convert_bytes(what: str, file: str, mesh: bytes) -> bytes:
+    """The JSON of `argtool view-data` for MESH (named WHAT in messages), kept for reuse."""
+    key = (what, hashlib.sha256(mesh).hexdigest())
     with _lock:
         if key in _cache:
             _cache.move_to_end(key)
@@ -69,8 +100,8 @@ def convert(model_id: int, file: str, mesh: Optional[bytes], triangles: Optional
         target = Path(scratch) / "view.json"
         source.write_bytes(mesh)
         run_argtool(["view-data", str(source), "-o", str(target), "--max-triangles", str(MAX_TRIANGLES)],
-                    f"model {model_id} took more than {TIMEOUT} s to prepare for the 3D view",
-                    f"model {model_id} cannot be shown in 3D")
+                    f"{what} took more than {TIMEOUT} s to prepare for the 3D view",
+                    f"{what} cannot be shown in 3D")
         data = target.read_bytes()
     with _lock:
         _cache[key] = data

@@ -1,6 +1,6 @@
-// The object page's 3D view: the surface of view.json (argtool view-data) turned with the mouse,
-// shaded with its own colours, mu or its nodes at a level, the Reeb graph's nodes on demand, and
-// a click on a node's disc or on the surface picks that node (search by that part).
+// The 3D view of an object page or an upload: the surface of view.json (argtool view-data) turned
+// with the mouse, shaded with its own colours, mu or its nodes at a level, the Reeb graph's nodes
+// on demand, and a click on a node's disc or on the surface picks that node (search by that part).
 import * as THREE from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 
@@ -60,13 +60,29 @@ function fail(text) {
   message.hidden = false;
 }
 
-// The ARG's frame has the principal axes on x, y, z, the longest first: x is drawn upright
-// (three's y), a rotation (x, y, z) -> (y, x, -z).
+// The ARG's frame has the principal axes on x, y, z, the longest first. view.json's canonical
+// up (the side the object rests on best is down) and front become three's y and z, so that the
+// camera, on +z, starts from the front with the object upright; without them x is drawn upright.
+let axes = [[0, 1, 0], [1, 0, 0], [0, 0, -1]];
+function frameAxes(data) {
+  const u = data.up, f = data.front;
+  if (!u || !f) return axes;
+  const right = [u[1] * f[2] - u[2] * f[1], u[2] * f[0] - u[0] * f[2], u[0] * f[1] - u[1] * f[0]];
+  return [right, u, f];
+}
 function upright(p, i) {
-  return [p[i + 1], p[i], -p[i + 2]];
+  return axes.map((a) => a[0] * p[i] + a[1] * p[i + 1] + a[2] * p[i + 2]);
 }
 
 function show(data) {
+  axes = frameAxes(data);
+  // An upload's page does not know its levels: they come with its view.
+  if (levelChoice.options.length === 0) {
+    const want = Math.min(Number(box.dataset.level || 2), data.levels.length - 1);
+    data.levels.forEach((_, l) => {
+      levelChoice.add(new Option(String(l), String(l), l === want, l === want));
+    });
+  }
   const faces = data.faces, positions = data.positions, faceCount = faces.length / 3;
   const position = new Float32Array(faceCount * 9);
   let radius = 0;
