@@ -105,7 +105,7 @@ FORCE:
 
 # Top-level targets --------------------------------------------------------------------------
 
-.PHONY: deps deps-demo cmake-all build test fuzz demo demo-stop deb distclean
+.PHONY: deps deps-demo cmake-all build test fuzz cancel-check demo demo-stop deb distclean
 
 deps:
 	tools/pg/install_deps.sh
@@ -132,6 +132,11 @@ test: deps
 # Every libFuzzer target for FUZZ_SECONDS each (default 20), clang with ASan + UBSan in build-fuzz/.
 fuzz: deps
 	FUZZ_SECONDS=$(or $(FUZZ_SECONDS),20) tests/fuzz/run_fuzz.sh
+
+# A 2-million-triangle build stopped at 20 moments (minutes of CPU, so outside make test).
+cancel-check: cmake-all
+	$(BUILD_DIR)/arg_unit_tests --gtest_also_run_disabled_tests \
+	  --gtest_filter='BuildCancel.DISABLED_TwentyStopsOfATwoMillionTriangleBuild'
 
 # The demo builds what it runs (the core's libraries, argtool, the extension): a tree it
 # configures leaves the tests and benchmarks out, which need packages the demo does not install.
