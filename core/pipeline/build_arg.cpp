@@ -119,13 +119,17 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
   // normals measure noise of the size of an edge as readily as shape, and a scan's noise would
   // otherwise fill the curvature histograms and speckle the views. A proxy is a level set
   // already smooth at its voxel size (and a soup's views see its parts as they are).
+  Stopwatch part;
   const Mesh smooth = prepared.proxy ? Mesh{} : smoothed(mesh, edges, stop);
+  rep.ms.smoothing = part.lap();
   const TriangleCurvature curvature =
       triangle_curvature(prepared.proxy ? mesh : smooth, edges, stop);
+  rep.ms.curvature = part.lap();
   double volume = 0;
   std::vector<std::vector<ArgNode>> per_level =
       node_attributes(mesh, sliced, reeb, curvature, &volume, stop);
   check_interrupt(stop);
+  rep.ms.nodes = part.lap();
 
   ArgGraph g;
   g.options = options;
@@ -152,14 +156,17 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
   counts.components = int(rep.components);
   g.global = global_descriptor(mesh, pose, counts, volume, stop);
   check_interrupt(stop);
+  rep.ms.global = part.lap();
   // The spectrum only counts between models whose surface is the shape's own (similarity.cpp).
   if (!(s.flags & (kFlagProxy | kFlagWideOpen)))
     g.spectrum = laplace_spectrum(mesh, kSpectrumSize, stop);
   check_interrupt(stop);
+  rep.ms.spectrum = part.lap();
   // The views see the model as it was given, not its proxy: a soup's parts as they are.
   g.panorama = panorama_descriptor(prepared.proxy ? prepared.posed : smooth, stop);
   check_interrupt(stop);
   pool_fragments(g, max_nodes_per_level(options.levels));
+  rep.ms.views = part.lap();
   rep.ms.features = clock.lap();
   // What a reader of the stored value will see: SIM is the same for a graph just built and
   // the same graph stored and read back.

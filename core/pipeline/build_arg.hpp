@@ -15,6 +15,8 @@ namespace arg {
 // Milliseconds spent in each stage of one build.
 struct BuildTimings {
   double read = 0, clean = 0, normalise = 0, mu = 0, reeb = 0, features = 0, serialise = 0;
+  // The features stage's parts (they sum to `features`), where most of a build goes.
+  double smoothing = 0, curvature = 0, nodes = 0, global = 0, spectrum = 0, views = 0;
 };
 
 struct BuildReport {

@@ -86,6 +86,16 @@ box() {  # box X0 Y0 Z0 X1 Y1 Z1 FIRST_VERTEX_INDEX
 check "a soup of two boxes builds on a proxy through the lazily loaded OpenVDB" \
   grep -qiE 'proxy[^:]*: *(yes|true|1)' "$work/soup.txt"
 
+# 4b. info's timings: the features stage's parts add up to the stage (each rounded in JSON).
+"$argtool" info --json "$work/soup.obj" > "$work/soup.json" 2> /dev/null
+check "info's features parts add up to the features stage" python3 -c '
+import json, sys
+j = json.load(open(sys.argv[1]))
+parts = j["features_ms"]
+assert set(parts) == {"smoothing", "curvature", "nodes", "global", "spectrum", "views"}, parts
+assert abs(sum(parts.values()) - j["timings_ms"]["features"]) < 0.01 + 1e-3 * j["timings_ms"]["features"]
+' "$work/soup.json"
+
 # 5. Progress into a log file: plain lines, no carriage returns.
 "$argtool" gen --out "$work/gen" --per-class 1 --class cup --class torus --labels \
   > /dev/null 2>&1

@@ -55,6 +55,9 @@ nlohmann::json describe(const argtool::LoadedArg& loaded) {
                        {"normalise", r.ms.normalise}, {"mu", r.ms.mu},
                        {"reeb", r.ms.reeb},           {"features", r.ms.features},
                        {"serialise", r.ms.serialise}};
+    j["features_ms"] = {{"smoothing", r.ms.smoothing}, {"curvature", r.ms.curvature},
+                        {"nodes", r.ms.nodes},         {"global", r.ms.global},
+                        {"spectrum", r.ms.spectrum},   {"views", r.ms.views}};
   }
   return j;
 }
