@@ -111,8 +111,11 @@ def texture_of(view: View, what: str) -> Tuple[bytes, str]:
 
 
 def convert_bytes(what: str, file: str, mesh: bytes, texture: Optional[bytes] = None) -> View:
-    """The view of MESH (named WHAT in messages) by `argtool view-data`, kept for reuse."""
-    key = (what, hashlib.sha256(mesh).hexdigest(), hashlib.sha256(texture or b"").hexdigest())
+    """The view of MESH (named WHAT in messages) by `argtool view-data`, kept for reuse: by its
+    bytes alone, so that an upload of a catalogue object reuses the object's (only the
+    messages of a failure, which is not kept, name it)."""
+    key = (hashlib.sha256(mesh).hexdigest(), hashlib.sha256(texture or b"").hexdigest(),
+           Path(file or "").suffix.lower())
     with _lock:
         if key in _cache:
             _cache.move_to_end(key)
