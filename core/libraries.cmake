@@ -41,7 +41,7 @@ set(ARG_METHOD_SOURCES
     search/ivf_page.cpp search/sketch_cells.cpp
     pipeline/build_arg.cpp pipeline/build_memory.cpp pipeline/node_positions.cpp
     pipeline/node_region.cpp
-    pipeline/pool_fragments.cpp pipeline/prepare_surface.cpp)
+    pipeline/pool_fragments.cpp pipeline/prepare_surface.cpp pipeline/surface_texture.cpp)
 set(ARG_GEN_SOURCES
     gen/creature_models.cpp gen/furniture_models.cpp gen/generate_models.cpp
     gen/implicit_solid.cpp gen/marching_tetrahedra.cpp gen/model_blueprints.cpp

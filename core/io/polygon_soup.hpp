@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/limits.hpp"
+#include "io/texture_sampling.hpp"
 
 namespace arg::io {
 
@@ -23,6 +24,12 @@ struct PolygonSoup {
   // What face_rgb stands for when the mesh takes its colour from it ("face", or "texture",
   // "vertex", "material" when a reader computed per-face colour itself, as the GLB reader does).
   std::string face_colour_source = "face";
+  // For display only (read_mesh's MeshTexture), kept when keep_display_texture is set: a reader
+  // that samples its own textures (GLB) puts the corner texture coordinates of the faces of one
+  // texture in corner_uv, that texture's encoded bytes here and its sampler beside them.
+  bool keep_display_texture = false;
+  std::string display_texture;
+  TextureSampler display_sampler;
   std::size_t faces_seen = 0;     // faces in the file, including skipped ones
   std::size_t faces_skipped = 0;  // faces with fewer than three corners
 

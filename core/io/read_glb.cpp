@@ -225,6 +225,7 @@ class GlbReader {
       encoded =
           std::string_view(reinterpret_cast<const char*>(image.image.data()), image.image.size());
     }
+    encoded_[source] = encoded;
     const std::string what = "image " + std::to_string(source);
     if (encoded.empty()) {
       report_.warnings.push_back(what + " is not embedded; its texture is ignored");
@@ -327,6 +328,9 @@ class GlbReader {
         throw_input_error("GLB", what, "COLOR_0 is not a VEC3 or VEC4 per vertex");
       }
     }
+    // The faces of the first texture that decodes keep their coordinates for display.
+    const bool display = uv && out_.soup().keep_display_texture &&
+                         keep_for_display(model_.textures[std::size_t(texture)].source, sampler);
     if (uv) {
       textured_ = true;
     } else if (colour) {
@@ -360,6 +364,7 @@ class GlbReader {
           st[k][1] = uv->value(t[std::size_t(k)], 1);
         }
         rgb = triangle_texture_colour(*image, st, sampler);
+        if (display) keep_corner_uvs(face, st, flip);
       } else if (colour) {
         rgb = {0, 0, 0};
         for (int k = 0; k < 3; ++k) {
@@ -373,11 +378,39 @@ class GlbReader {
     out_.set_locator({});
   }
 
+  // Whether the faces of image `source` keep their texture coordinates for display: the first
+  // textured image read is the one kept (its bytes and sampler go to the soup), others are not.
+  bool keep_for_display(int source, const TextureSampler& sampler) {
+    PolygonSoup& soup = out_.soup();
+    if (display_source_ < 0) {
+      display_source_ = source;
+      soup.display_texture = std::string(encoded_[source]);
+      soup.display_sampler = sampler;
+    }
+    return source == display_source_;
+  }
+
+  // Corner texture coordinates of `face` in its corner order (corners 1 and 2 swapped when the
+  // transform mirrors); non-finite ones are left unset, as the colour sampling tolerates them.
+  void keep_corner_uvs(int face, const double st[3][2], bool flip) {
+    float uv[6];
+    for (int k = 0; k < 3; ++k) {
+      const int from = flip && k > 0 ? 3 - k : k;
+      uv[2 * k] = float(st[from][0]);
+      uv[2 * k + 1] = float(st[from][1]);
+    }
+    for (float x : uv)
+      if (!std::isfinite(x)) return;
+    out_.set_corner_uvs(face, uv, 3);
+  }
+
   const tinygltf::Model& model_;
   SoupBuilder& out_;
   ReadReport& report_;
   std::vector<char> visited_;
   std::map<int, std::optional<Image>> images_;
+  std::map<int, std::string_view> encoded_;  // each image's bytes, as texture_image found them
+  int display_source_ = -1;
   bool textured_ = false, vertex_coloured_ = false, material_coloured_ = false;
 };
 

@@ -10,7 +10,8 @@
 
 namespace arg {
 
-Mesh read_mesh(std::string_view bytes, const ReadOptions& options, ReadReport* report_out) {
+Mesh read_mesh(std::string_view bytes, const ReadOptions& options, ReadReport* report_out,
+               MeshTexture* texture_out) {
   const Limits& limits = options.limits;
   if (bytes.size() > limits.max_input_bytes) {
     throw LimitError("mesh input of " + std::to_string(bytes.size()) + " bytes, more than " +
@@ -25,6 +26,7 @@ Mesh read_mesh(std::string_view bytes, const ReadOptions& options, ReadReport* r
   io::PolygonSoup soup;
   io::SoupBuilder builder(soup, format_name(report.format), limits, options.stop);
   builder.set_declared_counts_check(options.declared_counts);
+  soup.keep_display_texture = texture_out != nullptr;
   switch (report.format) {
     case MeshFormat::Off:
       io::read_off(bytes, builder, report);
@@ -59,7 +61,24 @@ Mesh read_mesh(std::string_view bytes, const ReadOptions& options, ReadReport* r
     }
   }
   io::TextureSampler sampler;  // OBJ and PLY: repeat, v = 0 at the bottom
-  Mesh mesh = io::soup_to_mesh(soup, texture ? &*texture : nullptr, sampler, builder, report);
+  std::vector<float> triangle_uv;
+  Mesh mesh = io::soup_to_mesh(soup, texture ? &*texture : nullptr, sampler, builder, report,
+                               texture_out ? &triangle_uv : nullptr);
+  if (texture_out) {
+    *texture_out = MeshTexture{};
+    // The texture the coordinates refer to: the caller's (OBJ, PLY), or the one a GLB's reader
+    // kept (it decoded it once already, so this cannot fail where that did not).
+    if (texture) {
+      texture_out->encoded = std::string(options.texture);
+      texture_out->image = std::move(*texture);
+      texture_out->sampler = sampler;
+    } else if (!soup.display_texture.empty()) {
+      texture_out->encoded = std::move(soup.display_texture);
+      texture_out->image = decode_image(texture_out->encoded, limits);
+      texture_out->sampler = soup.display_sampler;
+    }
+    if (!texture_out->image.empty()) texture_out->uv = std::move(triangle_uv);
+  }
   report.vertices_read = soup.vertex_count();
   report.faces_read = soup.faces_seen;
   if (report_out) *report_out = std::move(report);

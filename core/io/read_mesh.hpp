@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "common/limits.hpp"
+#include "io/image.hpp"
+#include "io/texture_sampling.hpp"
 #include "mesh/mesh.hpp"
 
 namespace arg {
@@ -48,9 +50,24 @@ struct ReadReport {
   std::vector<std::string> warnings;      // what was ignored, e.g. an unusable texture
 };
 
+// A texture and where it lies on each triangle, kept beside the mesh for display (the 3D view
+// maps it); the method never reads it, and the mesh is the same whether it is asked for or not.
+struct MeshTexture {
+  std::string encoded;  // the image as the file or the caller gave it (PNG, JPEG, TGA, BMP)
+  Image image;          // the same, decoded
+  io::TextureSampler sampler;
+  // 6 per row of the mesh's F: (s, t) at corners 0, 1, 2; NaN for a triangle without them (a
+  // GLB primitive with another texture or none, an OBJ face without vt).
+  std::vector<float> uv;
+
+  bool empty() const { return uv.empty() || image.empty(); }
+};
+
 // Parses `bytes` into a triangle mesh with per-triangle colour when the input has any.
-// Throws InputError (naming format and line/offset) or LimitError.
+// Throws InputError (naming format and line/offset) or LimitError. With `texture`, also keeps
+// the texture coordinates of an OBJ read with its texture, or of a GLB's first base colour
+// texture that decodes (left empty when there is none).
 Mesh read_mesh(std::string_view bytes, const ReadOptions& options = {},
-               ReadReport* report = nullptr);
+               ReadReport* report = nullptr, MeshTexture* texture = nullptr);
 
 }  // namespace arg

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "io/triangulate_polygon.hpp"
@@ -20,6 +21,31 @@ bool all_finite(const std::vector<float>& values, std::size_t begin, std::size_t
 
 enum class Colour { None, Texture, Face, Vertex };
 
+// The texture coordinates of the triangle whose corners are the soup's corner slots `s`: per
+// corner when all three have them, else per vertex; false when neither is complete.
+bool triangle_uv_of(const PolygonSoup& soup, const std::array<std::size_t, 3>& s, double uv[3][2]) {
+  bool have = !soup.corner_uv.empty();
+  for (std::size_t c = 0; c < 3 && have; ++c) {
+    have = all_finite(soup.corner_uv, 2 * s[c], 2);
+    if (have) {
+      uv[c][0] = soup.corner_uv[2 * s[c]];
+      uv[c][1] = soup.corner_uv[2 * s[c] + 1];
+    }
+  }
+  if (!have && !soup.vertex_uv.empty()) {
+    have = true;
+    for (std::size_t c = 0; c < 3 && have; ++c) {
+      const std::size_t v = std::size_t(soup.corners[s[c]]);
+      have = all_finite(soup.vertex_uv, 2 * v, 2);
+      if (have) {
+        uv[c][0] = soup.vertex_uv[2 * v];
+        uv[c][1] = soup.vertex_uv[2 * v + 1];
+      }
+    }
+  }
+  return have;
+}
+
 }  // namespace
 
 bool soup_has_texture_coordinates(const PolygonSoup& soup) {
@@ -27,7 +53,7 @@ bool soup_has_texture_coordinates(const PolygonSoup& soup) {
 }
 
 Mesh soup_to_mesh(const PolygonSoup& soup, const Image* texture, const TextureSampler& sampler,
-                  SoupBuilder& out, ReadReport& report) {
+                  SoupBuilder& out, ReadReport& report, std::vector<float>* triangle_uv) {
   const std::size_t nv = soup.vertex_count();
   const std::size_t nf = soup.face_count();
 
@@ -78,6 +104,16 @@ Mesh soup_to_mesh(const PolygonSoup& soup, const Image* texture, const TextureSa
     for (int c = 0; c < 3; ++c) mesh.F(t, c) = soup.corners[slots[std::size_t(t)][std::size_t(c)]];
   }
   report.triangles = slots.size();
+  if (triangle_uv) {
+    triangle_uv->assign(6 * slots.size(), std::numeric_limits<float>::quiet_NaN());
+    if (soup_has_texture_coordinates(soup)) {
+      for (std::size_t t = 0; t < slots.size(); ++t) {
+        double uv[3][2];
+        if (!triangle_uv_of(soup, slots[t], uv)) continue;
+        for (std::size_t i = 0; i < 6; ++i) (*triangle_uv)[6 * t + i] = float(uv[i / 2][i % 2]);
+      }
+    }
+  }
 
   // Which colour source is complete enough to use.
   Colour colour = Colour::None;
@@ -111,26 +147,7 @@ Mesh soup_to_mesh(const PolygonSoup& soup, const Image* texture, const TextureSa
     std::array<float, 3> rgb{0, 0, 0};
     if (colour == Colour::Texture) {
       double uv[3][2];
-      bool have = !soup.corner_uv.empty();
-      for (std::size_t c = 0; c < 3 && have; ++c) {
-        have = all_finite(soup.corner_uv, 2 * s[c], 2);
-        if (have) {
-          uv[c][0] = soup.corner_uv[2 * s[c]];
-          uv[c][1] = soup.corner_uv[2 * s[c] + 1];
-        }
-      }
-      if (!have && !soup.vertex_uv.empty()) {
-        have = true;
-        for (std::size_t c = 0; c < 3 && have; ++c) {
-          const std::size_t v = std::size_t(soup.corners[s[c]]);
-          have = all_finite(soup.vertex_uv, 2 * v, 2);
-          if (have) {
-            uv[c][0] = soup.vertex_uv[2 * v];
-            uv[c][1] = soup.vertex_uv[2 * v + 1];
-          }
-        }
-      }
-      if (have) {
+      if (triangle_uv_of(soup, s, uv)) {
         rgb = triangle_texture_colour(*texture, uv, sampler);
       } else {
         rgb = fallback;

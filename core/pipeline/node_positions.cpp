@@ -20,6 +20,7 @@ NodePositions node_positions(const Mesh& input, const BuildOptions& options,
   NodePositions out;
   PreparedSurface prepared = prepare_surface(input, options, stop);
   out.mesh = prepared.proxy ? std::move(*prepared.proxy) : std::move(prepared.posed);
+  out.pose = prepared.pose;
   const MeshEdges edges = mesh_edges(out.mesh.F);
   out.mu = normalised_mu(out.mesh, edges, options, stop);
   const SlicedSurface sliced = slice_intervals(out.mesh, out.mu, 1 << options.levels, stop);

@@ -8,6 +8,7 @@
 #include "common/build_options.hpp"
 #include "common/limits.hpp"
 #include "mesh/mesh.hpp"
+#include "mesh/normalize_pose.hpp"
 
 namespace arg {
 
@@ -26,6 +27,7 @@ struct NodePositions {
   // proxy when the build used one), in the frame in which the ARG measures its barycentres
   // (centre of mass at the origin, principal axes on x, y, z, unit RMS radius).
   Mesh mesh;
+  Pose pose;                               // what took the input into that frame (apply_pose)
   std::vector<double> mu;                  // mu_N in [0, 1] per vertex of `mesh`
   std::vector<NodePlacementLevel> levels;  // levels[0] is the coarsest
   // Which finest node owns each part of a triangle: triangle f has one piece per finest mu

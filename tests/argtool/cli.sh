@@ -243,4 +243,56 @@ status=$?
 check "part-eval: a level no model has fails, saying why" \
   bash -c "test $status -ne 0 && grep -q 'no level 9' '$work/pe9.err' &&
     grep -q 'no model gave a part query' '$work/pe9.err'"
+# 10. view-data maps a texture: its coordinates per corner of the shown surface, the TGA sent
+# as a PNG; a texture that cannot be read, or is too large to map, leaves colours and says why.
+"$argtool" view-data "$work/square.obj" --texture "$work/red.tga" -o "$work/view.json" \
+  --texture-output "$work/view-texture" > /dev/null 2>&1
+check "view-data: the file's (s, t) at each corner of the surface, the texture as a PNG" \
+  python3 - "$work/view.json" "$work/view-texture" << 'PY'
+import json, sys
+v = json.load(open(sys.argv[1]))
+faces = len(v["faces"]) // 3
+assert len(v["uvs"]) == 6 * faces and v["untextured_faces"] == [], v["uvs"]
+assert v["texture"] == {"type": "image/png", "width": 2, "height": 2, "wrap_s": "repeat",
+                        "wrap_t": "repeat"}, v["texture"]
+assert v["texture_note"] is None and v["face_colours"][:3] == [255, 0, 0]
+assert open(sys.argv[2], "rb").read(8) == b"\x89PNG\r\n\x1a\n"
+# Each vertex of the pyramid has one vt in the file: each place keeps its own (s, t).
+given = {(0, 0), (1, 0), (1, 1), (0, 1), (0.5, 0.5)}
+at = {}
+for f in range(faces):
+    for k in range(3):
+        uv = (v["uvs"][6 * f + 2 * k], v["uvs"][6 * f + 2 * k + 1])
+        i = 3 * v["faces"][3 * f + k]
+        place = tuple(round(x, 4) for x in v["positions"][i:i + 3])
+        assert uv in given and at.setdefault(place, uv) == uv, (place, uv, at)
+assert sorted(at.values()) == sorted(given), at
+PY
+"$argtool" view-data "$work/square.obj" --texture "$work/red.tga" -o "$work/plain.json" \
+  > /dev/null 2>&1
+check "view-data without --texture-output maps none (the colours baked from it stay)" python3 -c '
+import json, sys
+v = json.load(open(sys.argv[1]))
+assert v["uvs"] is None and v["texture"] is None and v["face_colours"][:3] == [255, 0, 0], v
+' "$work/plain.json"
+printf 'not an image' > "$work/bad.png"
+"$argtool" view-data "$work/square.obj" --texture "$work/bad.png" -o "$work/bad.json" \
+  --texture-output "$work/bad-texture" > /dev/null 2>&1
+status=$?
+# A 4097 x 1 TGA: one pixel wider than the 3D view maps.
+printf '\0\0\2\0\0\0\0\0\0\0\0\0\1\20\1\0\30\0' > "$work/wide.tga"
+head -c 12291 /dev/zero >> "$work/wide.tga"
+"$argtool" view-data "$work/square.obj" --texture "$work/wide.tga" -o "$work/wide.json" \
+  --texture-output "$work/wide-texture" > /dev/null 2>&1
+status_wide=$?
+check "view-data: an unreadable or too large texture is left out, saying why (exit 0)" \
+  python3 - "$work/bad.json" "$work/wide.json" "$status" "$status_wide" << 'PY'
+import json, sys
+bad, wide = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+assert sys.argv[3:] == ["0", "0"], sys.argv[3:]
+assert bad["uvs"] is None and bad["face_colours"] is None, bad["texture"]
+assert bad["texture_note"].startswith("the texture cannot be read (image: "), bad["texture_note"]
+assert wide["uvs"] is None and wide["face_colours"] is not None, wide["texture"]
+assert "4097 x 1 pixels, more than the 3D view's 4096 a side" in wide["texture_note"], wide
+PY
 echo "1..$n"

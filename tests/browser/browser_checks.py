@@ -27,6 +27,7 @@ from selenium.webdriver.support.ui import Select, WebDriverWait
 
 import chrome
 import tap
+import textured_glb
 from tap import expect
 
 # Seconds to wait for a page or an image: generous, as the machine may be busy building.
@@ -496,6 +497,62 @@ class Browser:
             finally:
                 conn.execute("DELETE FROM objects WHERE id = 999998")
 
+    @staticmethod
+    def checker_pixels(picture: Image.Image) -> Tuple[int, int]:
+        """How many pixels have the hue of the checkerboard's magenta, and of its green, shaded."""
+        magenta = green = 0
+        for r, g, b in picture.getdata():
+            if r > 60 and b > 60 and g < 0.35 * min(r, b):
+                magenta += 1
+            elif g > 60 and r < 0.4 * g and b < 0.4 * g:
+                green += 1
+        return magenta, green
+
+    def texture_mapped(self, what: str) -> WebElement:
+        """Waits for the 3D view on the page and its texture; its canvas (fails if not mapped)."""
+        self.wait(lambda d: d.find_element(By.ID, "view3d").get_attribute("data-state") != "loading")
+        box = self.d.find_element(By.ID, "view3d")
+        expect(box.get_attribute("data-state") == "ready",
+               f"{what}: the 3D view did not draw: {self.d.find_element(By.ID, 'view-message').text!r}")
+        self.wait(lambda d: box.get_attribute("data-texture") != "loading")
+        expect(box.get_attribute("data-texture") == "mapped",
+               f"{what}: the texture is {box.get_attribute('data-texture')!r}, not mapped "
+               f"({self.d.find_element(By.ID, 'view-note').text!r})")
+        return box.find_element(By.TAG_NAME, "canvas")
+
+    def view_maps_a_texture(self) -> None:
+        glb = textured_glb.globe_glb()
+        with psycopg.connect(autocommit=True) as conn:
+            # Put in for this check only: the others count the sample's models and classes.
+            conn.execute("INSERT INTO objects (id, model_id, title, class, file, mesh) "
+                         "VALUES (999997, 'textured-globe', 'Textured globe', 'globe', 'globe.glb', %s)", (glb,))
+            try:
+                self.open("object/999997", "#view3d")
+                canvas = self.texture_mapped("a textured GLB")
+                shot = self.picture(canvas)
+                magenta, green = self.checker_pixels(shot)
+                expect(magenta > 500 and green > 500,
+                       f"the checkerboard's colours in the 3D view: {magenta} magenta, {green} green pixels")
+                Select(self.d.find_element(By.ID, "view-colour")).select_by_value("mu")
+                mu = self.redraw(canvas, shot, "after colouring the textured object by mu")
+                expect(self.checker_pixels(mu)[0] < 50, "mu colouring still shows the texture's magenta")
+                ActionChains(self.d).move_to_element(canvas).click().perform()
+                picked = int(self.d.find_element(By.ID, "view3d").get_attribute("data-picked"))
+                expect(picked >= 0, "a click on the textured surface picked no node")
+                with urllib.request.urlopen(self.url + "object/999997/texture", timeout=WAIT) as answer:
+                    kind, image = answer.headers.get("Content-Type", ""), answer.read()
+                expect(kind == "image/png" and image == textured_glb.checker_png(),
+                       f"the texture route sends {kind} of {len(image)} bytes, not the GLB's PNG")
+            finally:
+                conn.execute("DELETE FROM objects WHERE id = 999997")
+        with tempfile.TemporaryDirectory() as scratch:
+            path = Path(scratch) / "globe.glb"
+            path.write_bytes(glb)
+            self.upload(path, "#ranked")
+            magenta, green = self.checker_pixels(self.picture(self.texture_mapped("an uploaded textured GLB")))
+            expect(magenta > 500 and green > 500,
+                   f"the upload's 3D view: {magenta} magenta, {green} green pixels")
+
     def listens_on_localhost_only(self) -> None:
         port = int(re.search(r":(\d+)/", self.url).group(1))  # type: ignore[union-attr]
         addresses = []
@@ -531,6 +588,8 @@ class Browser:
              self.part_click_finds_parts),
             ("an unknown object, node or pair, no mesh or too many triangles: a clear message",
              self.bad_view_input_is_clear),
+            ("a textured GLB's 3D view maps its texture, uploaded too; mu replaces it, a click picks",
+             self.view_maps_a_texture),
             ("the browser listens on 127.0.0.1 only", self.listens_on_localhost_only),
         ]
 

@@ -175,7 +175,8 @@ TEST(ReadGlb, StripsFansAndByteIndices) {
 }
 
 // One triangle near the top of the texture and one near the bottom.
-std::string textured_glb(const std::string& sampler, const std::string& factor) {
+std::string textured_glb(const std::string& sampler, const std::string& factor,
+                         const std::string& nodes = kOneNode) {
   const std::string png = test_io::encode_image("png", 4, 4, [](int, int y) {
     return y < 2 ? std::array<std::uint8_t, 3>{255, 0, 0} : std::array<std::uint8_t, 3>{0, 0, 255};
   });
@@ -187,7 +188,7 @@ std::string textured_glb(const std::string& sampler, const std::string& factor) 
                             kFloat, 6, "VEC2");
   const int image = g.view(png);
   return g.glb("\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
-               ",\"TEXCOORD_0\":" + std::to_string(uv) + "},\"material\":0}]}]," + kOneNode +
+               ",\"TEXCOORD_0\":" + std::to_string(uv) + "},\"material\":0}]}]," + nodes +
                ",\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":0}" +
                factor + "}}],\"textures\":[{\"source\":0,\"sampler\":0}],\"samplers\":[" + sampler +
                "],\"images\":[{\"bufferView\":" + std::to_string(image) +
@@ -206,6 +207,81 @@ TEST(ReadGlb, BaseColourTextureSampledWithVZeroAtTheTop) {
   // The factor multiplies the texture.
   mesh = read_mesh(textured_glb("{}", ",\"baseColorFactor\":[0.5,1,1,1]"));
   EXPECT_NEAR(mesh.C(0, 0), 0.5, 1e-6);
+}
+
+TEST(ReadGlb, Texcoord0AndItsImageAreKeptForDisplay) {
+  const std::string glb = textured_glb("{\"wrapS\":33071}", "");
+  MeshTexture texture;
+  ReadReport report;
+  const Mesh mesh = read_mesh(glb, {}, &report, &texture);
+  ASSERT_FALSE(texture.empty());
+  EXPECT_EQ(texture.encoded.compare(0, 4, "\x89PNG"), 0);
+  EXPECT_EQ(texture.image.width, 4);
+  EXPECT_FALSE(texture.sampler.v_origin_bottom);
+  EXPECT_EQ(texture.sampler.wrap_s, io::TextureWrap::ClampToEdge);
+  EXPECT_EQ(texture.sampler.wrap_t, io::TextureWrap::Repeat);
+  const std::vector<float> expected = {0.3f, 0.2f, 0.6f, 0.2f, 0.4f, 0.3f,
+                                       0.3f, 0.8f, 0.6f, 0.8f, 0.4f, 0.7f};
+  EXPECT_EQ(texture.uv, expected);
+  const Mesh plain = read_mesh(glb);
+  EXPECT_EQ(mesh.V, plain.V);
+  EXPECT_EQ(mesh.F, plain.F);
+  EXPECT_EQ(mesh.C, plain.C);
+  EXPECT_EQ(report.colour_source, "texture");
+}
+
+TEST(ReadGlb, AMirroringNodeKeepsEachCornersTextureCoordinates) {
+  // The one node, given a scale of -1 on x: the reader reverses the winding.
+  const std::string glb = textured_glb(
+      "{}", "",
+      "\"nodes\":[{\"mesh\":0,\"scale\":[-1,1,1]}],\"scenes\":[{\"nodes\":[0]}],\"scene\":0");
+  MeshTexture texture;
+  const Mesh mesh = read_mesh(glb, {}, nullptr, &texture);
+  ASSERT_EQ(texture.uv.size(), 12u);
+  EXPECT_EQ(mesh.F(0, 1), 2);  // wound the other way
+  // Corner k of triangle f keeps the coordinates its vertex has in the file.
+  const std::vector<double> file_uv = {0.3, 0.2, 0.6, 0.2, 0.4, 0.3, 0.3, 0.8, 0.6, 0.8, 0.4, 0.7};
+  for (int f = 0; f < 2; ++f)
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < 2; ++i)
+        EXPECT_FLOAT_EQ(texture.uv[std::size_t(6 * f + 2 * k + i)],
+                        float(file_uv[std::size_t(2 * mesh.F(f, k) + i)]));
+}
+
+TEST(ReadGlb, ATexcoordAccessorShorterThanThePositionsIsRefused) {
+  const std::string png = test_io::encode_image("png", 2, 2, [](int, int) {
+    return std::array<std::uint8_t, 3>{9, 9, 9};
+  });
+  Gltf g;
+  const int pos = g.accessor(floats({0, 0, 0, 1, 0, 0, 0, 1, 0}), kFloat, 3, "VEC3");
+  const int uv = g.accessor(floats({0, 0, 1, 0}), kFloat, 2, "VEC2");
+  const int image = g.view(png);
+  const std::string glb =
+      g.glb("\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
+            ",\"TEXCOORD_0\":" + std::to_string(uv) + "},\"material\":0}]}]," + kOneNode +
+            ",\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":0}}}],"
+            "\"textures\":[{\"source\":0}],\"images\":[{\"bufferView\":" +
+            std::to_string(image) + ",\"mimeType\":\"image/png\"}]");
+  MeshTexture texture;
+  try {
+    read_mesh(glb, {}, nullptr, &texture);
+    FAIL() << "read a GLB with 2 texture coordinates for 3 vertices";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("TEXCOORD is not a VEC2 per vertex"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(ReadGlb, AnUnusableTextureLeavesNothingToMap) {
+  const std::string garbage = cube_glb(
+      kOneNode +
+          ",\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":0}}}],"
+          "\"textures\":[{\"source\":0}],"
+          "\"images\":[{\"uri\":\"data:image/png;base64,AAECAwQFBgc=\"}]",
+      ",\"material\":0");
+  MeshTexture texture;
+  read_mesh(garbage, {}, nullptr, &texture);
+  EXPECT_TRUE(texture.empty());
 }
 
 TEST(ReadGlb, VertexColoursAndMaterialColours) {

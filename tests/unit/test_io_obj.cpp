@@ -93,6 +93,55 @@ TEST(ReadObj, TextureColoursFollowTheObjConventionThatVZeroIsAtTheBottom) {
   EXPECT_NEAR(mesh.C(0, 2), 1.0, 1e-6);
 }
 
+// A quad in two triangles whose texture coordinates differ per corner at the shared vertices
+// (a seam): read_mesh's MeshTexture keeps them per corner, the mesh itself unchanged.
+TEST(ReadObj, TextureCoordinatesAreKeptPerCornerForDisplay) {
+  const std::string png = red_over_blue_png();
+  const std::string obj =
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.5 0.5\n"
+      "f 1/1 2/2 3/3\nf 1/5 3/3 4/4\n";
+  ReadOptions options;
+  options.texture = png;
+  MeshTexture texture;
+  const Mesh mesh = read_mesh(obj, options, nullptr, &texture);
+  ASSERT_FALSE(texture.empty());
+  EXPECT_EQ(texture.encoded, png);
+  EXPECT_EQ(texture.image.width, 4);
+  EXPECT_TRUE(texture.sampler.v_origin_bottom);
+  const std::vector<float> expected = {0, 0, 1, 0, 1, 1, 0.5f, 0.5f, 1, 1, 0, 1};
+  EXPECT_EQ(texture.uv, expected);
+  // The same mesh and colours as a read that does not ask for them.
+  const Mesh plain = read_mesh(obj, options);
+  EXPECT_EQ(mesh.V, plain.V);
+  EXPECT_EQ(mesh.F, plain.F);
+  EXPECT_EQ(mesh.C, plain.C);
+  // Without the texture, or without coordinates, there is nothing to map.
+  read_mesh(obj, {}, nullptr, &texture);
+  EXPECT_TRUE(texture.empty());
+  read_mesh(cube_obj(), options, nullptr, &texture);
+  EXPECT_TRUE(texture.empty());
+}
+
+TEST(ReadObj, ATextureCoordinateIndexOutOfRangeIsRefused) {
+  ReadOptions options;
+  const std::string png = red_over_blue_png();
+  options.texture = png;
+  MeshTexture texture;
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nf 1/1 2/2 3/3\n";
+  try {
+    read_mesh(obj, options, nullptr, &texture);
+    FAIL() << "read an OBJ whose face names texture coordinate 3 of 2";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("line 6: a face refers to texture coordinate 3 but the "
+                                         "file has 2"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(
+      read_mesh("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/-2 3/1\n", options, nullptr, &texture),
+      InputError);
+}
+
 TEST(ReadObj, TextureWithoutTextureCoordinatesIsIgnoredWithAWarning) {
   ReadOptions options;
   const std::string png = red_over_blue_png();

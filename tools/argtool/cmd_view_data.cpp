@@ -3,22 +3,102 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "command_registry.hpp"
+#include "common/errors.hpp"
+#include "io/read_mesh.hpp"
 #include "load_arg.hpp"
 #include "pipeline/node_positions.hpp"
 #include "pipeline/node_region.hpp"
+#include "pipeline/surface_texture.hpp"
+#include "plugin_libraries.hpp"
 #include "render/upright_frame.hpp"
 #include "render_input.hpp"
 
 namespace {
 
+// The largest texture the 3D view maps: WebGL promises 4096 pixels a side on nearly every
+// device, and the page sends it as it is; larger ones are shown in the colours baked from them.
+constexpr int kMaxTextureSide = 4096;
+constexpr std::size_t kMaxTextureBytes = std::size_t(32) << 20;
+
 struct ViewDataArgs {
-  std::string mesh, output;
+  std::string mesh, texture, output, texture_output;
   long max_triangles = 500000;
   arg::BuildOptions options;
 };
+
+// The mesh as read, with its texture when `want_texture` (OBJ: `texture_path`; GLB: its own).
+// A separate texture that cannot be read is left out, with the reason in `note`.
+arg::Mesh read_view_mesh(const ViewDataArgs& a, bool want_texture, arg::MeshTexture& texture,
+                         std::string& note) {
+  const std::string bytes = argtool::read_file_bytes(a.mesh);
+  if (bytes.compare(0, 4, "ARGR") == 0)
+    throw std::runtime_error(a.mesh + ": an ARG file has no surface to draw; give the mesh");
+  const std::string image = a.texture.empty() ? std::string() : argtool::read_file_bytes(a.texture);
+  arg::ReadOptions read;
+  read.texture = image;
+  arg::ReadReport report;
+  arg::Mesh mesh;
+  try {
+    try {
+      mesh = arg::read_mesh(bytes, read, &report, want_texture ? &texture : nullptr);
+    } catch (const arg::Error& e) {
+      // decode_image's errors (bad bytes, too many pixels) start so; the mesh's name its format.
+      if (image.empty() || std::string(e.what()).rfind("image: ", 0) != 0) throw;
+      note = std::string("the texture cannot be read (") + e.what() + "): shown without it";
+      read.texture = {};
+      report = {};
+      mesh = arg::read_mesh(bytes, read, &report, want_texture ? &texture : nullptr);
+    }
+  } catch (const arg::Error& e) {
+    throw std::runtime_error(a.mesh + ": " + e.what());
+  }
+  if (texture.empty() && note.empty())
+    for (const std::string& warning : report.warnings)
+      if (warning.find("texture") != std::string::npos) note = warning;
+  return mesh;
+}
+
+const char* image_type(const std::string& encoded) {
+  if (encoded.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0) return "image/png";
+  if (encoded.compare(0, 3, "\xff\xd8\xff") == 0) return "image/jpeg";
+  return nullptr;
+}
+
+const char* wrap_name(arg::io::TextureWrap wrap) {
+  switch (wrap) {
+    case arg::io::TextureWrap::ClampToEdge:
+      return "clamp";
+    case arg::io::TextureWrap::MirroredRepeat:
+      return "mirror";
+    case arg::io::TextureWrap::Repeat:
+      break;
+  }
+  return "repeat";
+}
+
+// Writes the texture for the page (PNG and JPEG as given, others as PNG) and returns its MIME
+// type, or "" with the reason in `note` when it is too large to map.
+std::string write_texture(const arg::MeshTexture& texture, const std::string& path,
+                          std::string& note) {
+  const arg::Image& image = texture.image;
+  if (image.width > kMaxTextureSide || image.height > kMaxTextureSide) {
+    note = "the texture is " + std::to_string(image.width) + " x " + std::to_string(image.height) +
+           " pixels, more than the 3D view's " + std::to_string(kMaxTextureSide) +
+           " a side: shown in the colours taken from it";
+    return {};
+  }
+  const char* type = image_type(texture.encoded);
+  if (type && texture.encoded.size() <= kMaxTextureBytes) {
+    argtool::write_file_bytes(path, texture.encoded);
+    return type;
+  }
+  argtool::write_png(image, path);
+  return "image/png";
+}
 
 // Numbers as JSON text: 6 significant digits are below a pixel on any screen; NaN cannot occur
 // (the pipeline refuses non-finite input) but would be written as 0 to keep the JSON valid.
@@ -41,14 +121,22 @@ void put_array(std::string& out, const char* key, std::size_t n, Each each) {
 }
 
 int run_view_data(const ViewDataArgs& a) {
-  const arg::Mesh input = argtool::read_mesh_file(a.mesh);
+  const bool want_texture = !a.texture_output.empty();
+  arg::MeshTexture texture;
+  std::string note;
+  const arg::Mesh input = read_view_mesh(a, want_texture, texture, note);
   if (input.F.rows() > a.max_triangles)
     throw std::runtime_error("too large to display: " + std::to_string(input.F.rows()) +
                              " triangles, more than the limit of " +
                              std::to_string(a.max_triangles));
+  std::string type;
+  if (!texture.empty()) type = write_texture(texture, a.texture_output, note);
   // The surface the graph was built on, in the ARG's frame (principal axes on x, y, z), so
-  // that the nodes sit where the ARG measured them.
-  const arg::NodePositions p = arg::node_positions(input, a.options);
+  // that the nodes sit where the ARG measured them; with a texture, its coordinates on it.
+  arg::SurfaceTexture uv;
+  const arg::NodePositions p =
+      type.empty() ? arg::node_positions(input, a.options)
+                   : arg::node_positions_with_texture(input, texture.uv, a.options, &uv);
   const arg::Mesh& m = p.mesh;
   const auto nv = std::size_t(m.V.rows()), nf = std::size_t(m.F.rows());
   std::string out = "{\"format\":1,";
@@ -73,6 +161,32 @@ int run_view_data(const ViewDataArgs& a) {
   } else {
     out += "\"face_colours\":null";
   }
+  out += ',';
+  // The texture's coordinates per corner of each face (v = 0 at the image's bottom row, as
+  // three.js takes them), the faces without any, and the image's size and wrapping; or nulls,
+  // with the reason in texture_note when the file has a texture that is not mapped.
+  if (!type.empty()) {
+    const bool flip = !texture.sampler.v_origin_bottom;
+    put_array(out, "uvs", 6 * nf, [&](std::size_t i) {
+      const float x = uv.uv[i];
+      put_number(out, flip && i % 2 ? 1.0 - x : x);
+    });
+    out += ',';
+    std::vector<std::size_t> bare;
+    for (std::size_t f = 0; f < nf; ++f)
+      if (!uv.textured[f]) bare.push_back(f);
+    put_array(out, "untextured_faces", bare.size(),
+              [&](std::size_t i) { out += std::to_string(bare[i]); });
+    out += ",\"texture\":" + nlohmann::json{{"type", type},
+                                            {"width", texture.image.width},
+                                            {"height", texture.image.height},
+                                            {"wrap_s", wrap_name(texture.sampler.wrap_s)},
+                                            {"wrap_t", wrap_name(texture.sampler.wrap_t)}}
+                                 .dump();
+  } else {
+    out += "\"uvs\":null,\"untextured_faces\":null,\"texture\":null";
+  }
+  out += ",\"texture_note\":" + (note.empty() ? std::string("null") : nlohmann::json(note).dump());
   out += ',';
   put_array(out, "mu", nv, [&](std::size_t i) { put_number(out, p.mu[i]); });
   out += ",\"levels\":[";
@@ -99,6 +213,10 @@ int run_view_data(const ViewDataArgs& a) {
   argtool::write_file_bytes(a.output, out);
   std::printf("wrote %s (%zu vertices, %zu triangles, %zu levels)\n", a.output.c_str(), nv, nf,
               p.levels.size());
+  if (!type.empty())
+    std::printf("wrote %s (%s, %d x %d)\n", a.texture_output.c_str(), type.c_str(),
+                texture.image.width, texture.image.height);
+  if (!note.empty()) std::printf("note: %s\n", note.c_str());
   return 0;
 }
 
@@ -109,6 +227,10 @@ const bool registered = argtool::register_command(
       auto a = std::make_shared<ViewDataArgs>();
       app.add_option("mesh", a->mesh, "mesh file")->required()->check(CLI::ExistingFile);
       app.add_option("-o,--output", a->output, "JSON to write")->required();
+      app.add_option("--texture", a->texture, "texture image for OBJ")->check(CLI::ExistingFile);
+      app.add_option("--texture-output", a->texture_output,
+                     "where to write the texture the view maps (PNG or JPEG), with its "
+                     "coordinates in the JSON; without it, none is mapped");
       app.add_option("--max-triangles", a->max_triangles,
                      "refuse a mesh with more triangles than this (too large to display)")
           ->check(CLI::Range(1L, 100000000L))

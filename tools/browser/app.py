@@ -139,22 +139,41 @@ def object_page(request: Request, model_id: int, level: int = 2, part: int = -1)
                     looks=catalogue.APPEARANCE_LABELS, look=catalogue.DEFAULT_APPEARANCE, part=part)
 
 
-def view_json(model_id: int) -> bytes:
+def model_view(model_id: int) -> viewdata.View:
     with catalogue.connect() as conn:
         row = catalogue.stored_mesh(conn, model_id)
     if row is None:
         raise viewdata.ViewUnavailable(f"there is no model {model_id} in the catalogue", 404)
-    return viewdata.convert(model_id, row["file"], row["mesh"], row["triangles"])
+    return viewdata.convert(model_id, row["file"], row["mesh"], row["triangles"], row["texture"])
 
 
 @app.get("/object/{model_id}/view.json")
 async def view(model_id: int) -> Response:
     """The 3D view's data (argtool view-data); a reason as {"error": ...} when there is none."""
     try:
-        data = await run_in_threadpool(view_json, model_id)
+        shown = await run_in_threadpool(model_view, model_id)
     except viewdata.ViewUnavailable as why:
         return JSONResponse({"error": why.message}, status_code=why.status_code)
-    return Response(data, media_type="application/json", headers={"Cache-Control": "max-age=3600"})
+    return Response(shown.data, media_type="application/json", headers={"Cache-Control": "max-age=3600"})
+
+
+def texture_response(shown: viewdata.View, what: str) -> Response:
+    try:
+        image, media_type = viewdata.texture_of(shown, what)
+    except viewdata.ViewUnavailable as why:
+        return JSONResponse({"error": why.message}, status_code=why.status_code)
+    return Response(image, media_type=media_type, headers={
+        "Cache-Control": "max-age=3600", "X-Content-Type-Options": "nosniff"})
+
+
+@app.get("/object/{model_id}/texture")
+async def texture(model_id: int) -> Response:
+    """The texture the 3D view maps (PNG or JPEG); a reason as {"error": ...} when there is none."""
+    try:
+        shown = await run_in_threadpool(model_view, model_id)
+    except viewdata.ViewUnavailable as why:
+        return JSONResponse({"error": why.message}, status_code=why.status_code)
+    return texture_response(shown, f"model {model_id}")
 
 
 @app.get("/object/{model_id}/graph.svg")
@@ -282,7 +301,17 @@ async def upload(request: Request) -> HTMLResponse:
 async def upload_view(key: str) -> Response:
     """The 3D view's data of a recent upload; a reason as {"error": ...} when there is none."""
     try:
-        data = await run_in_threadpool(viewdata.convert_upload, key)
+        shown = await run_in_threadpool(viewdata.convert_upload, key)
     except viewdata.ViewUnavailable as why:
         return JSONResponse({"error": why.message}, status_code=why.status_code)
-    return Response(data, media_type="application/json", headers={"Cache-Control": "max-age=3600"})
+    return Response(shown.data, media_type="application/json", headers={"Cache-Control": "max-age=3600"})
+
+
+@app.get("/upload/{key}/texture")
+async def upload_texture(key: str) -> Response:
+    """The texture an upload's 3D view maps (a GLB's own); a reason as {"error": ...} when none."""
+    try:
+        shown = await run_in_threadpool(viewdata.convert_upload, key)
+    except viewdata.ViewUnavailable as why:
+        return JSONResponse({"error": why.message}, status_code=why.status_code)
+    return texture_response(shown, "the upload")

@@ -119,14 +119,16 @@ def ranked_with(conn: psycopg.Connection[Any], query: pgarg.Arg, k: int, filters
 
 
 def stored_mesh(conn: psycopg.Connection[Any], model_id: int) -> Optional[Dict[str, Any]]:
-    """The mesh as stored, its file name and its number of triangles; None when there is no such id."""
+    """The mesh as stored, its file name, its number of triangles and the texture stored beside it
+    (an OBJ's); None when there is no such id."""
     statement = sql.SQL(
-        "SELECT file, mesh, (arg_info(descr)->>'triangles')::bigint AS triangles "
+        "SELECT file, mesh, texture, (arg_info(descr)->>'triangles')::bigint AS triangles "
         "FROM {} WHERE id = %s").format(sql.Identifier(TABLE))
     with conn.cursor(row_factory=dict_row) as cur:
         row = cur.execute(statement, (model_id,)).fetchone()
-    if row is not None and row["mesh"] is not None:
-        row["mesh"] = bytes(row["mesh"])
+    for column in ("mesh", "texture"):
+        if row is not None and row[column] is not None:
+            row[column] = bytes(row[column])
     return row
 
 

@@ -3,13 +3,14 @@
 from __future__ import annotations
 
 import hashlib
+import json
 import os
 import subprocess
 import tempfile
 import threading
 from collections import OrderedDict
 from pathlib import Path
-from typing import List, Optional, Tuple
+from typing import List, NamedTuple, Optional, Tuple
 
 HERE = Path(__file__).resolve().parent
 # server.sh sets it from BUILD_DIR; the default is the repository's build folder.
@@ -23,6 +24,17 @@ TIMEOUT = 120
 KEEP = 8
 # The last few uploads' bytes, for their 3D view: few, as each may be up to the upload's limit.
 KEEP_UPLOADS = 4
+# The largest texture image the page is sent (argtool view-data writes none above 32 MB).
+MAX_TEXTURE_BYTES = 32 * 1024 * 1024
+# What a texture the page is sent starts with, by its type: PNG and JPEG only.
+TEXTURE_MAGIC = {"image/png": b"\x89PNG\r\n\x1a\n", "image/jpeg": b"\xff\xd8\xff"}
+
+
+class View(NamedTuple):
+    """A mesh's 3D view: the JSON of argtool view-data, and the texture it maps (None if none)."""
+    data: bytes
+    texture: Optional[bytes]
+    texture_type: str
 
 
 class ViewUnavailable(Exception):
@@ -48,19 +60,21 @@ def run_argtool(args: List[str], slow: str, failed: str) -> None:
         raise ViewUnavailable(f"{failed}: {why}", 413 if "too large to display" in why else 422)
 
 
-_cache: "OrderedDict[Tuple[str, str], bytes]" = OrderedDict()
+_cache: "OrderedDict[Tuple[str, str, str], View]" = OrderedDict()
 _uploads: "OrderedDict[str, Tuple[str, bytes]]" = OrderedDict()
 _lock = threading.Lock()
 
 
-def convert(model_id: int, file: str, mesh: Optional[bytes], triangles: Optional[int]) -> bytes:
-    """The JSON of `argtool view-data` for one stored mesh; raises ViewUnavailable with the reason."""
+def convert(model_id: int, file: str, mesh: Optional[bytes], triangles: Optional[int],
+            texture: Optional[bytes] = None) -> View:
+    """The view of one stored mesh (with the texture stored beside it, for OBJ); raises
+    ViewUnavailable with the reason."""
     if mesh is None:
         raise ViewUnavailable(f"model {model_id} has no mesh stored: there is nothing to show in 3D", 404)
     if triangles is not None and triangles > MAX_TRIANGLES:
         raise ViewUnavailable(f"model {model_id} is too large to display in 3D: {triangles:,} triangles, "
                               f"more than {MAX_TRIANGLES:,}", 413)
-    return convert_bytes(f"model {model_id}", file, mesh)
+    return convert_bytes(f"model {model_id}", file, mesh, texture)
 
 
 def keep_upload(file: str, mesh: bytes) -> str:
@@ -74,9 +88,8 @@ def keep_upload(file: str, mesh: bytes) -> str:
     return key
 
 
-def convert_upload(key: str) -> bytes:
-    """The JSON of `argtool view-data` for an upload kept by keep_upload; ViewUnavailable (404)
-    once it is no longer kept."""
+def convert_upload(key: str) -> View:
+    """The view of an upload kept by keep_upload; ViewUnavailable (404) once it is no longer kept."""
     with _lock:
         kept = _uploads.get(key)
     if kept is None:
@@ -85,9 +98,24 @@ def convert_upload(key: str) -> bytes:
     return convert_bytes(f"the upload {file}", file, mesh)
 
 
-def convert_bytes(what: str, file: str, mesh: bytes) -> bytes:
-    """The JSON of `argtool view-data` for MESH (named WHAT in messages), kept for reuse."""
-    key = (what, hashlib.sha256(mesh).hexdigest())
+def texture_of(view: View, what: str) -> Tuple[bytes, str]:
+    """The texture a view maps and its MIME type, checked again before it is sent: a PNG or a JPEG
+    by its first bytes, at most MAX_TEXTURE_BYTES; ViewUnavailable (404, 422) otherwise."""
+    if view.texture is None:
+        raise ViewUnavailable(f"{what} has no texture the 3D view maps", 404)
+    magic = TEXTURE_MAGIC.get(view.texture_type)
+    if magic is None or not view.texture.startswith(magic) or len(view.texture) > MAX_TEXTURE_BYTES:
+        raise ViewUnavailable(f"the texture of {what} is not a PNG or JPEG of at most "
+                              f"{MAX_TEXTURE_BYTES // (1024 * 1024)} MB", 422)
+    return view.texture, view.texture_type
+
+
+def convert_bytes(what: str, file: str, mesh: bytes, texture: Optional[bytes] = None) -> View:
+    """The view of MESH (named WHAT in messages) by `argtool view-data`, kept for reuse: by its
+    bytes alone, so that an upload of a catalogue object reuses the object's (only the
+    messages of a failure, which is not kept, name it)."""
+    key = (hashlib.sha256(mesh).hexdigest(), hashlib.sha256(texture or b"").hexdigest(),
+           Path(file or "").suffix.lower())
     with _lock:
         if key in _cache:
             _cache.move_to_end(key)
@@ -98,13 +126,21 @@ def convert_bytes(what: str, file: str, mesh: bytes) -> bytes:
         # argtool reads the format from the content; the suffix keeps OBJ's texture lookup right.
         source = Path(scratch) / f"model{Path(file or '').suffix.lower() or '.off'}"
         target = Path(scratch) / "view.json"
+        image = Path(scratch) / "texture"
         source.write_bytes(mesh)
-        run_argtool(["view-data", str(source), "-o", str(target), "--max-triangles", str(MAX_TRIANGLES)],
-                    f"{what} took more than {TIMEOUT} s to prepare for the 3D view",
+        args = ["view-data", str(source), "-o", str(target), "--max-triangles", str(MAX_TRIANGLES),
+                "--texture-output", str(image)]
+        if texture:
+            (Path(scratch) / "given-texture").write_bytes(texture)
+            args += ["--texture", str(Path(scratch) / "given-texture")]
+        run_argtool(args, f"{what} took more than {TIMEOUT} s to prepare for the 3D view",
                     f"{what} cannot be shown in 3D")
         data = target.read_bytes()
+        # argtool writes the texture only when the JSON says it maps one, and of the type it says.
+        mapped = json.loads(data).get("texture")
+        view = View(data, image.read_bytes() if mapped else None, mapped["type"] if mapped else "")
     with _lock:
-        _cache[key] = data
+        _cache[key] = view
         while len(_cache) > KEEP:
             _cache.popitem(last=False)
-    return data
+    return view

@@ -1,11 +1,13 @@
 // The 3D view of an object page or an upload: the surface of view.json (argtool view-data) turned
-// with the mouse, shaded with its own colours, mu or its nodes at a level, the Reeb graph's nodes
-// on demand, and a click on a node's disc or on the surface picks that node (search by that part).
+// with the mouse, shaded with its own colours or texture, mu or its nodes at a level, the Reeb
+// graph's nodes on demand, and a click on a node's disc or on the surface picks that node (search
+// by that part).
 import * as THREE from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 
 const box = document.getElementById("view3d");
 const message = document.getElementById("view-message");
+const note = document.getElementById("view-note");
 const controlsForm = document.getElementById("view-controls");
 const colourChoice = document.getElementById("view-colour");
 const graphChoice = document.getElementById("view-graph");
@@ -74,6 +76,15 @@ function upright(p, i) {
   return axes.map((a) => a[0] * p[i] + a[1] * p[i + 1] + a[2] * p[i + 2]);
 }
 
+// Why the view shows colours where the file has a texture: view.json's reason, or the browser's.
+function say(text) {
+  if (!note || !text) return;
+  note.textContent = text;
+  note.hidden = false;
+}
+
+const WRAPS = { repeat: THREE.RepeatWrapping, clamp: THREE.ClampToEdgeWrapping, mirror: THREE.MirroredRepeatWrapping };
+
 function show(data) {
   axes = frameAxes(data);
   // An upload's page does not know its levels: they come with its view.
@@ -84,12 +95,20 @@ function show(data) {
     });
   }
   const faces = data.faces, positions = data.positions, faceCount = faces.length / 3;
+  // With a texture, the faces that have coordinates are drawn first (the textured material's
+  // group), then the others: slot i of the geometry draws face order[i].
+  const mapped = Boolean(data.texture && data.uvs);
+  const bare = new Set(mapped ? data.untextured_faces : []);
+  const order = [];
+  for (let f = 0; f < faceCount; ++f) if (!bare.has(f)) order.push(f);
+  const texturedCount = mapped ? order.length : 0;
+  for (const f of bare) order.push(f);
   const position = new Float32Array(faceCount * 9);
   let radius = 0;
-  for (let f = 0; f < faceCount; ++f) {
+  for (let i = 0; i < faceCount; ++i) {
     for (let k = 0; k < 3; ++k) {
-      const v = upright(positions, 3 * faces[3 * f + k]);
-      position.set(v, 9 * f + 3 * k);
+      const v = upright(positions, 3 * faces[3 * order[i] + k]);
+      position.set(v, 9 * i + 3 * k);
       radius = Math.max(radius, Math.hypot(v[0], v[1], v[2]));
     }
   }
@@ -98,9 +117,19 @@ function show(data) {
   geometry.computeVertexNormals();  // corners not shared: flat shading, facets as the file has them
   const colour = new THREE.BufferAttribute(new Float32Array(faceCount * 9), 3);
   geometry.setAttribute("color", colour);
-  const surface = new THREE.Mesh(geometry, new THREE.MeshLambertMaterial({
-    vertexColors: true, side: THREE.DoubleSide,
-  }));
+  const plain = new THREE.MeshLambertMaterial({ vertexColors: true, side: THREE.DoubleSide });
+  const textured = new THREE.MeshLambertMaterial({ vertexColors: true, side: THREE.DoubleSide });
+  let texture = null;  // once loaded; the textured faces show their colours until then
+  if (mapped) {
+    const uv = new Float32Array(faceCount * 6);
+    for (let i = 0; i < texturedCount; ++i) uv.set(data.uvs.slice(6 * order[i], 6 * order[i] + 6), 6 * i);
+    geometry.setAttribute("uv", new THREE.BufferAttribute(uv, 2));
+    geometry.addGroup(0, 3 * texturedCount, 0);
+    geometry.addGroup(3 * texturedCount, 3 * (faceCount - texturedCount), 1);
+  }
+  box.dataset.texture = mapped ? "loading" : "none";
+  say(data.texture_note);
+  const surface = new THREE.Mesh(geometry, mapped ? [textured, plain] : plain);
 
   const scene = new THREE.Scene();
   scene.background = new THREE.Color(0xffffff);
@@ -127,17 +156,26 @@ function show(data) {
   box.dataset.picked = String(picked);
   const level = () => Number(levelChoice.value);
 
+  // The texture shows through white (a picked part tints it); mu and the nodes replace it.
+  const WHITE = [255, 255, 255];
   function paint() {
     const mode = colourChoice.value, nodes = data.levels[level()].face_nodes, c = colour.array;
-    for (let f = 0; f < faceCount; ++f) {
+    const showTexture = texture !== null && mode === "own";
+    if (textured.map !== (showTexture ? texture : null)) {
+      textured.map = showTexture ? texture : null;
+      textured.needsUpdate = true;
+    }
+    for (let i = 0; i < faceCount; ++i) {
+      const f = order[i];
       for (let k = 0; k < 3; ++k) {
         const v = faces[3 * f + k];
         let rgb;
         if (picked >= 0 && nodes[f] === picked) rgb = PICKED;
         else if (mode === "mu") rgb = muColour(data.mu[v]);
         else if (mode === "nodes") rgb = nodes[f] >= 0 ? nodeColour(nodes[f]) : CLAY;
+        else if (showTexture && i < texturedCount) rgb = WHITE;
         else rgb = data.face_colours ? data.face_colours.slice(3 * f, 3 * f + 3) : CLAY;
-        c.set(linear(rgb), 9 * f + 3 * k);
+        c.set(linear(rgb), 9 * i + 3 * k);
       }
     }
     colour.needsUpdate = true;
@@ -189,7 +227,7 @@ function show(data) {
     // A node's disc is drawn over the surface, so a click on it picks it wherever it lies.
     const disc = ray.intersectObjects(graph.children.filter((o) => o.isMesh))[0];
     const hit = disc ? null : ray.intersectObject(surface)[0];
-    picked = disc ? disc.object.userData.node : hit ? data.levels[level()].face_nodes[hit.faceIndex] : -1;
+    picked = disc ? disc.object.userData.node : hit ? data.levels[level()].face_nodes[order[hit.faceIndex]] : -1;
     box.dataset.picked = String(picked);
     if (partLink) {
       partLink.hidden = picked < 0;
@@ -204,6 +242,21 @@ function show(data) {
   levelChoice.addEventListener("change", () => { picked = -1; if (partLink) partLink.hidden = true; update(); });
   update();
   box.dataset.state = "ready";
+  if (mapped) {
+    // The texture route serves what view.json describes: beside it, as .../texture.
+    new THREE.TextureLoader().load(box.dataset.src.replace(/view\.json$/, "texture"), (loaded) => {
+      loaded.colorSpace = THREE.SRGBColorSpace;
+      loaded.wrapS = WRAPS[data.texture.wrap_s] || THREE.RepeatWrapping;
+      loaded.wrapT = WRAPS[data.texture.wrap_t] || THREE.RepeatWrapping;
+      loaded.anisotropy = renderer.capabilities.getMaxAnisotropy();
+      texture = loaded;
+      box.dataset.texture = "mapped";
+      update();
+    }, undefined, () => {
+      box.dataset.texture = "failed";
+      say("The texture could not be loaded: the surface shows the colours taken from it.");
+    });
+  }
 }
 
 async function start() {
