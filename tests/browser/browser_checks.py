@@ -30,6 +30,14 @@ import tap
 import textured_glb
 from tap import expect
 
+# The browser's own modules, for a check of what they hand argtool (tools/browser, with the
+# Python client it imports, as serve.py puts them on the path).
+ROOT = Path(__file__).resolve().parents[2]
+sys.path[:0] = [str(ROOT / "tools" / "browser"), str(ROOT / "clients" / "python")]
+import catalogue  # noqa: E402
+import pair_picture  # noqa: E402
+import viewdata  # noqa: E402
+
 # Seconds to wait for a page or an image: generous, as the machine may be busy building.
 WAIT = 60
 # A mesh the server cannot read: an OFF header that promises more vertices than follow.
@@ -553,6 +561,36 @@ class Browser:
             expect(magenta > 500 and green > 500,
                    f"the upload's 3D view: {magenta} magenta, {green} green pixels")
 
+    def views_follow_the_stored_options(self) -> None:
+        # The demo's table builds every value with the defaults; another catalogue may not. What
+        # the browser hands view-data and render-match is the stored value's own options.
+        model = self.models[0]
+        with catalogue.connect() as conn:
+            row = catalogue.stored_mesh(conn, model["id"])
+            stored = conn.execute("SELECT arg_info(descr)->>'options' FROM objects WHERE id = %s",
+                                  (model["id"],)).fetchone()
+        assert row is not None and stored is not None
+        expect(row["options"] == stored[0] and "levels=5" in row["options"],
+               f"stored_mesh's options {row['options']!r}, the value's {stored[0]!r}")
+        other = row["options"].replace("levels=5", "levels=3")
+        levels = {}
+        for options in (row["options"], other):
+            shown = viewdata.convert(model["id"], row["file"], row["mesh"], row["triangles"], row["texture"],
+                                     options)
+            levels[options] = len(json.loads(shown.data)["levels"])
+        expect(levels == {row["options"]: 6, other: 4},
+               f"levels of the 3D view's graph by the options it was given: {levels}")
+        # render-match draws the level asked for only if the graphs were built with its options.
+        a = (model["id"], row["file"], row["mesh"])
+        try:
+            pair_picture.render(a, a, "shape", 4, other)
+            drew = True
+        except viewdata.ViewUnavailable:
+            drew = False
+        expect(not drew, "render-match drew level 4 of graphs built with levels=3")
+        expect(pair_picture.render(a, a, "shape", 2, other).startswith(b"\x89PNG"),
+               "render-match did not draw level 2 of graphs built with levels=3")
+
     def listens_on_localhost_only(self) -> None:
         port = int(re.search(r":(\d+)/", self.url).group(1))  # type: ignore[union-attr]
         addresses = []
@@ -590,6 +628,8 @@ class Browser:
              self.bad_view_input_is_clear),
             ("a textured GLB's 3D view maps its texture, uploaded too; mu replaces it, a click picks",
              self.view_maps_a_texture),
+            ("the 3D view and the pair picture build graphs with the stored value's options",
+             self.views_follow_the_stored_options),
             ("the browser listens on 127.0.0.1 only", self.listens_on_localhost_only),
         ]
 

@@ -144,7 +144,8 @@ def model_view(model_id: int) -> viewdata.View:
         row = catalogue.stored_mesh(conn, model_id)
     if row is None:
         raise viewdata.ViewUnavailable(f"there is no model {model_id} in the catalogue", 404)
-    return viewdata.convert(model_id, row["file"], row["mesh"], row["triangles"], row["texture"])
+    return viewdata.convert(model_id, row["file"], row["mesh"], row["triangles"], row["texture"],
+                            row["options"])
 
 
 @app.get("/object/{model_id}/view.json")
@@ -233,7 +234,9 @@ def pair_png(a_id: int, b_id: int, weights: str, level: int) -> bytes:
         if row["mesh"] is None:
             raise viewdata.ViewUnavailable(f"model {model_id} has no mesh stored", 404)
     assert a is not None and b is not None
-    return pair_picture.render((a_id, a["file"], a["mesh"]), (b_id, b["file"], b["mesh"]), weights, level)
+    # Two values are compared only when built with the same options, so a's are both's.
+    return pair_picture.render((a_id, a["file"], a["mesh"]), (b_id, b["file"], b["mesh"]), weights, level,
+                               a["options"])
 
 
 @app.get("/pair/{a_id}/{b_id}/matches.png")

@@ -119,10 +119,12 @@ def ranked_with(conn: psycopg.Connection[Any], query: pgarg.Arg, k: int, filters
 
 
 def stored_mesh(conn: psycopg.Connection[Any], model_id: int) -> Optional[Dict[str, Any]]:
-    """The mesh as stored, its file name, its number of triangles and the texture stored beside it
-    (an OBJ's); None when there is no such id."""
+    """The mesh as stored, its file name, its number of triangles, the texture stored beside it
+    (an OBJ's) and the build options of its stored ARG (a picture's graph must be that one); None
+    when there is no such id."""
     statement = sql.SQL(
-        "SELECT file, mesh, texture, (arg_info(descr)->>'triangles')::bigint AS triangles "
+        "SELECT file, mesh, texture, (arg_info(descr)->>'triangles')::bigint AS triangles, "
+        "coalesce(arg_info(descr)->>'options', '') AS options "
         "FROM {} WHERE id = %s").format(sql.Identifier(TABLE))
     with conn.cursor(row_factory=dict_row) as cur:
         row = cur.execute(statement, (model_id,)).fetchone()

@@ -11,15 +11,16 @@ from typing import Tuple
 from viewdata import TIMEOUT, run_argtool
 
 KEEP = 8
-_cache: "OrderedDict[Tuple[int, int, str, int], bytes]" = OrderedDict()
+_cache: "OrderedDict[Tuple[int, int, str, int, str], bytes]" = OrderedDict()
 _lock = threading.Lock()
 
 
 def render(a: Tuple[int, str, bytes], b: Tuple[int, str, bytes], weights: str, level: int,
-           size: int = 320) -> bytes:
+           options: str = "", size: int = 320) -> bytes:
     """PNG of models a and b, each (id, file name, mesh bytes), side by side with the groups
-    matched at `level` under the preset `weights` linked, as `argtool render-match` draws them."""
-    key = (a[0], b[0], weights, level)
+    matched at `level` under the preset `weights` linked, as `argtool render-match` draws them
+    from graphs built with the build `options` their stored values were built with."""
+    key = (a[0], b[0], weights, level, options)
     with _lock:
         if key in _cache:
             _cache.move_to_end(key)
@@ -33,8 +34,9 @@ def render(a: Tuple[int, str, bytes], b: Tuple[int, str, bytes], weights: str, l
             path.write_bytes(mesh)
             paths.append(str(path))
         png = Path(scratch) / "pair.png"
+        extra = ["--build-options", options] if options else []
         run_argtool(["render-match", *paths, "-o", str(png), "--weights", weights, "--level", str(level),
-                     "--size", str(size)],
+                     "--size", str(size), *extra],
                     f"the picture of models {a[0]} and {b[0]} took more than {TIMEOUT} s",
                     f"models {a[0]} and {b[0]} cannot be drawn")
         data = png.read_bytes()

@@ -60,21 +60,21 @@ def run_argtool(args: List[str], slow: str, failed: str) -> None:
         raise ViewUnavailable(f"{failed}: {why}", 413 if "too large to display" in why else 422)
 
 
-_cache: "OrderedDict[Tuple[str, str, str], View]" = OrderedDict()
+_cache: "OrderedDict[Tuple[str, str, str, str], View]" = OrderedDict()
 _uploads: "OrderedDict[str, Tuple[str, bytes]]" = OrderedDict()
 _lock = threading.Lock()
 
 
 def convert(model_id: int, file: str, mesh: Optional[bytes], triangles: Optional[int],
-            texture: Optional[bytes] = None) -> View:
-    """The view of one stored mesh (with the texture stored beside it, for OBJ); raises
-    ViewUnavailable with the reason."""
+            texture: Optional[bytes] = None, options: str = "") -> View:
+    """The view of one stored mesh (with the texture stored beside it, for OBJ), its graph built
+    with the stored ARG's build OPTIONS; raises ViewUnavailable with the reason."""
     if mesh is None:
         raise ViewUnavailable(f"model {model_id} has no mesh stored: there is nothing to show in 3D", 404)
     if triangles is not None and triangles > MAX_TRIANGLES:
         raise ViewUnavailable(f"model {model_id} is too large to display in 3D: {triangles:,} triangles, "
                               f"more than {MAX_TRIANGLES:,}", 413)
-    return convert_bytes(f"model {model_id}", file, mesh, texture)
+    return convert_bytes(f"model {model_id}", file, mesh, texture, options)
 
 
 def keep_upload(file: str, mesh: bytes) -> str:
@@ -110,12 +110,14 @@ def texture_of(view: View, what: str) -> Tuple[bytes, str]:
     return view.texture, view.texture_type
 
 
-def convert_bytes(what: str, file: str, mesh: bytes, texture: Optional[bytes] = None) -> View:
-    """The view of MESH (named WHAT in messages) by `argtool view-data`, kept for reuse: by its
-    bytes alone, so that an upload of a catalogue object reuses the object's (only the
-    messages of a failure, which is not kept, name it)."""
+def convert_bytes(what: str, file: str, mesh: bytes, texture: Optional[bytes] = None,
+                  options: str = "") -> View:
+    """The view of MESH (named WHAT in messages) by `argtool view-data`, its graph built with the
+    build OPTIONS (empty: the defaults), kept for reuse: by its bytes and options alone, so that
+    an upload of a catalogue object reuses the object's (only the messages of a failure, which
+    is not kept, name it)."""
     key = (hashlib.sha256(mesh).hexdigest(), hashlib.sha256(texture or b"").hexdigest(),
-           Path(file or "").suffix.lower())
+           Path(file or "").suffix.lower(), options)
     with _lock:
         if key in _cache:
             _cache.move_to_end(key)
@@ -130,6 +132,8 @@ def convert_bytes(what: str, file: str, mesh: bytes, texture: Optional[bytes] = 
         source.write_bytes(mesh)
         args = ["view-data", str(source), "-o", str(target), "--max-triangles", str(MAX_TRIANGLES),
                 "--texture-output", str(image)]
+        if options:
+            args += ["--build-options", options]
         if texture:
             (Path(scratch) / "given-texture").write_bytes(texture)
             args += ["--texture", str(Path(scratch) / "given-texture")]
