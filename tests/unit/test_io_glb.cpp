@@ -272,13 +272,18 @@ TEST(ReadGlb, ATexcoordAccessorShorterThanThePositionsIsRefused) {
   }
 }
 
-TEST(ReadGlb, AnUnusableTextureLeavesNothingToMap) {
-  const std::string garbage = cube_glb(
+// A cube whose base colour texture is eight bytes that no decoder reads.
+std::string cube_with_undecodable_texture() {
+  return cube_glb(
       kOneNode +
           ",\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":0}}}],"
           "\"textures\":[{\"source\":0}],"
           "\"images\":[{\"uri\":\"data:image/png;base64,AAECAwQFBgc=\"}]",
       ",\"material\":0");
+}
+
+TEST(ReadGlb, AnUnusableTextureLeavesNothingToMap) {
+  const std::string garbage = cube_with_undecodable_texture();
   MeshTexture texture;
   read_mesh(garbage, {}, nullptr, &texture);
   EXPECT_TRUE(texture.empty());
@@ -310,12 +315,7 @@ TEST(ReadGlb, VertexColoursAndMaterialColours) {
 }
 
 TEST(ReadGlb, AnUnusableTextureIsAWarningNotAnError) {
-  const std::string garbage = cube_glb(
-      kOneNode +
-          ",\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":0}}}],"
-          "\"textures\":[{\"source\":0}],"
-          "\"images\":[{\"uri\":\"data:image/png;base64,AAECAwQFBgc=\"}]",
-      ",\"material\":0");
+  const std::string garbage = cube_with_undecodable_texture();
   ReadReport report;
   const Mesh mesh = read_mesh(garbage, {}, &report);
   EXPECT_EQ(mesh.F.rows(), 12);

@@ -148,13 +148,25 @@ def model_view(model_id: int) -> viewdata.View:
                             row["options"])
 
 
+def unavailable(why: viewdata.ViewUnavailable) -> JSONResponse:
+    """Why there is no view (or no texture), as the page's script reads it: {"error": ...}."""
+    return JSONResponse({"error": why.message}, status_code=why.status_code)
+
+
+async def stored_view(model_id: int) -> "viewdata.View | JSONResponse":
+    """A catalogue object's 3D view, or the reason there is none."""
+    try:
+        return await run_in_threadpool(model_view, model_id)
+    except viewdata.ViewUnavailable as why:
+        return unavailable(why)
+
+
 @app.get("/object/{model_id}/view.json")
 async def view(model_id: int) -> Response:
     """The 3D view's data (argtool view-data); a reason as {"error": ...} when there is none."""
-    try:
-        shown = await run_in_threadpool(model_view, model_id)
-    except viewdata.ViewUnavailable as why:
-        return JSONResponse({"error": why.message}, status_code=why.status_code)
+    shown = await stored_view(model_id)
+    if isinstance(shown, Response):
+        return shown
     return Response(shown.data, media_type="application/json", headers={"Cache-Control": "max-age=3600"})
 
 
@@ -162,7 +174,7 @@ def texture_response(shown: viewdata.View, what: str) -> Response:
     try:
         image, media_type = viewdata.texture_of(shown, what)
     except viewdata.ViewUnavailable as why:
-        return JSONResponse({"error": why.message}, status_code=why.status_code)
+        return unavailable(why)
     return Response(image, media_type=media_type, headers={
         "Cache-Control": "max-age=3600", "X-Content-Type-Options": "nosniff"})
 
@@ -170,10 +182,9 @@ def texture_response(shown: viewdata.View, what: str) -> Response:
 @app.get("/object/{model_id}/texture")
 async def texture(model_id: int) -> Response:
     """The texture the 3D view maps (PNG or JPEG); a reason as {"error": ...} when there is none."""
-    try:
-        shown = await run_in_threadpool(model_view, model_id)
-    except viewdata.ViewUnavailable as why:
-        return JSONResponse({"error": why.message}, status_code=why.status_code)
+    shown = await stored_view(model_id)
+    if isinstance(shown, Response):
+        return shown
     return texture_response(shown, f"model {model_id}")
 
 
@@ -306,7 +317,7 @@ async def upload_view(key: str) -> Response:
     try:
         shown = await run_in_threadpool(viewdata.convert_upload, key)
     except viewdata.ViewUnavailable as why:
-        return JSONResponse({"error": why.message}, status_code=why.status_code)
+        return unavailable(why)
     return Response(shown.data, media_type="application/json", headers={"Cache-Control": "max-age=3600"})
 
 
@@ -316,5 +327,5 @@ async def upload_texture(key: str) -> Response:
     try:
         shown = await run_in_threadpool(viewdata.convert_upload, key)
     except viewdata.ViewUnavailable as why:
-        return JSONResponse({"error": why.message}, status_code=why.status_code)
+        return unavailable(why)
     return texture_response(shown, "the upload")
