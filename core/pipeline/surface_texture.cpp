@@ -121,9 +121,9 @@ NodePositions node_positions_with_texture(const Mesh& input, const std::vector<f
   SurfaceTexture carried;
   carried.uv.assign(6 * std::size_t(nf), 0.0f);
   carried.textured.assign(std::size_t(nf), 0);
-  auto posed = [&](int v) -> Eigen::Vector3d {
-    return out.pose.scale * (out.pose.rotation * (input.V.row(v).transpose() - out.pose.centre));
-  };
+  // The input's corners in the surface's frame (only their positions are used: a mirroring
+  // pose's turned faces do not matter here).
+  const Vertices posed = apply_pose(input, out.pose).V;
   for (Eigen::Index f = 0; f < nf; ++f) {
     poll_interrupt(std::size_t(f), stop);
     const int from = origin[std::size_t(f)];
@@ -132,8 +132,9 @@ NodePositions node_positions_with_texture(const Mesh& input, const std::vector<f
     bool finite = true;
     for (int i = 0; i < 6; ++i) finite = finite && std::isfinite(uv[i]);
     if (!finite) continue;
-    const Eigen::Vector3d a = posed(input.F(from, 0)), b = posed(input.F(from, 1)),
-                          c = posed(input.F(from, 2));
+    const Eigen::Vector3d a = posed.row(input.F(from, 0)).transpose(),
+                          b = posed.row(input.F(from, 1)).transpose(),
+                          c = posed.row(input.F(from, 2)).transpose();
     for (int k = 0; k < 3; ++k) {
       const Eigen::Vector3d w =
           clamped_weights(surface.V.row(surface.F(f, k)).transpose(), a, b, c);
