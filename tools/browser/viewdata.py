@@ -113,9 +113,9 @@ def texture_of(view: View, what: str) -> Tuple[bytes, str]:
 def convert_bytes(what: str, file: str, mesh: bytes, texture: Optional[bytes] = None,
                   options: str = "") -> View:
     """The view of MESH (named WHAT in messages) by `argtool view-data`, its graph built with the
-    build OPTIONS (empty: the defaults), kept for reuse: by its bytes and options alone, so that
-    an upload of a catalogue object reuses the object's (only the messages of a failure, which
-    is not kept, name it)."""
+    build OPTIONS (empty: the defaults), kept for reuse by its bytes, texture, suffix and options
+    text (not by WHAT, which only a failure's message, never kept, names). An upload passes no
+    options and a catalogue object its value's written out, so the two keep separate views."""
     key = (hashlib.sha256(mesh).hexdigest(), hashlib.sha256(texture or b"").hexdigest(),
            Path(file or "").suffix.lower(), options)
     with _lock:
