@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# How often the canonical up (argtool upright: the broadest base with the centroid highest is
-# down) agrees with the labelled sets' own up, beside the longest principal axis (the pictures'
-# up before it). The sets keep +Y or +Z up, differing from file to file (SHREC 2007's figures
+# How often the canonical up (argtool upright without --up: the file's +Y or +Z where the model
+# stands on it, else the broadest base with the centroid highest is down) agrees with the
+# labelled sets' own up, beside the longest principal axis (the pictures' up before both). The sets keep +Y or +Z up, differing from file to file (SHREC 2007's figures
 # and tables +Z, its busts, cups and chairs +Y), so "agrees" is: the file axis nearest to the
 # chosen up is +Y or +Z. Upside down, or any X, is wrong whatever the file's convention.
 #

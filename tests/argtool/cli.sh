@@ -181,8 +181,8 @@ check "ingest skips a bad file, names it and loads the others (exit 0)" bash -c 
   grep -q '^ingest: skipped bad.off: ' '$work/ing1.err'"
 check "ingest writes the same bytes on 1 and 2 threads" cmp -s "$work/ing1.copy" "$work/ing2.copy"
 check "ingest rows: the catalogue's fields in order, NULL where it lists none, then the ARG" \
-  awk -F'\t' 'NF != 10 || $10 !~ /^arg1:/ { bad = 1 }
-    $2 == "cup_00.off" && $1 == "cup_00" && $3 == "cup" { listed++ }
+  awk -F'\t' 'NF != 11 || $11 !~ /^arg1:/ { bad = 1 }
+    $2 == "cup_00.off" && $1 == "cup_00" && $3 == "cup" && $10 == "+z" { listed++ }
     $2 == "more/torus copy.off" && $1 == "\\N" && $5 == "\\N" { unlisted++ }
     END { exit bad || listed != 1 || unlisted != 1 }' "$work/ing1.copy"
 check "each ingested ARG is the bytes argtool build writes for its file" python3 - \
@@ -295,4 +295,21 @@ assert bad["texture_note"].startswith("the texture cannot be read (image: "), ba
 assert wide["uvs"] is None and wide["face_colours"] is not None, wide["texture"]
 assert "4097 x 1 pixels, more than the 3D view's 4096 a side" in wide["texture_note"], wide
 PY
+# 11. --up: the file axis a catalogue says is up is the pictures' up; a word that is not an
+# axis is refused with what is accepted. The generated cup is drawn +z up.
+cup=$work/gen/cup_00.off
+check "upright --up takes the file's axis as up" bash -c \
+  "'$argtool' upright --up -X '$cup' | awk -F'\t' 'NR == 2 && \$2 == \"-X\" { ok = 1 } END { exit !ok }'"
+check "upright without --up stands the cup on its foot (+z)" bash -c \
+  "'$argtool' upright '$cup' | awk -F'\t' 'NR == 2 && \$2 == \"+Z\" { ok = 1 } END { exit !ok }'"
+"$argtool" upright --up sideways "$cup" > /dev/null 2> "$work/up.err"
+status=$?
+check "upright --up sideways is refused, saying which axes are" bash -c \
+  "test $status -ne 0 && grep -q 'is not one of +x, -x, +y, -y, +z, -z' '$work/up.err'"
+check "render --view upright --up writes the picture" bash -c \
+  "'$argtool' render '$cup' -o '$work/up.png' --size 64 --view upright --up +z > /dev/null &&
+   test -s '$work/up.png'"
+check "render --up +w is refused" bash -c \
+  "! '$argtool' render '$cup' -o '$work/bad-up.png' --view upright --up +w 2> /dev/null"
+
 echo "1..$n"

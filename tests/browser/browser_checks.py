@@ -318,6 +318,21 @@ class Browser:
             expect(share < 0.5, f"{model['model_id']} stands on its head in its thumbnail: its centre "
                    f"of mass is at {share:.2f} of its height from the top")
 
+    def catalogue_up_stands_animals(self) -> None:
+        # The sample's catalogue says +z is up (argtool gen); the load keeps it and the thumbnails
+        # follow it. Without it, the side the shape stands on lays the first one on its back.
+        with psycopg.connect() as conn:
+            ups = {r[0] for r in conn.execute("SELECT DISTINCT up FROM objects")}
+        expect(ups == {"+z"}, f"the table keeps the catalogue's up as {sorted(map(str, ups))}, not +z")
+        animals = [m for m in self.models if m["class"] == "fourleg"]
+        expect(len(animals) > 0, "the sample has no four-legged animal")
+        for model in animals:
+            with urllib.request.urlopen(self.url + f"thumbnail/{model['id']}.png", timeout=WAIT) as response:
+                share, pixels = self.mass_height(Image.open(io.BytesIO(response.read())))
+            expect(pixels > 100, f"{model['model_id']}'s thumbnail is blank")
+            expect(share < 0.5, f"{model['model_id']} lies on its back in its thumbnail: its centre of "
+                   f"mass is at {share:.2f} of its height from the top")
+
     def view_starts_upright(self) -> None:
         model = self.figures()[0]
         share, pixels = self.mass_height(self.picture(self.view_ready(model)))
@@ -619,6 +634,8 @@ class Browser:
             ("an unknown object is a 404 page", self.unknown_object_is_404),
             ("the 3D view draws the object and turns when dragged", self.view_renders_and_turns),
             ("the 3D view starts with a standing figure upright, as its thumbnail", self.view_starts_upright),
+            ("the catalogue's up reaches the table and the thumbnails: animals stand on their legs",
+             self.catalogue_up_stands_animals),
             ("the 3D view's graph toggle shows the level's nodes, mu colours the surface", self.view_graph_toggle),
             ("a pair page shows SIM's terms with their weights, adding up to the SIM shown", self.pair_terms_sum_to_sim),
             ("shape only, shape and colour, colour first: the order changes", self.presets_change_the_order),

@@ -115,7 +115,10 @@ int run_gen(const GenArgs& a) {
   const std::vector<std::string> all = arg::generator_classes();
   const std::vector<std::string>& wanted = a.classes.empty() ? all : a.classes;
 
-  std::string catalogue = "model_id,path,class,inventory_no,title,artist,period,material,licence\n";
+  // The generator builds every model +z up: the catalogue says so (tools/demo/load.sql keeps it
+  // for the pictures' up).
+  std::string catalogue =
+      "model_id,path,class,inventory_no,title,artist,period,material,licence,up\n";
   std::string labels = "model_id,path,class\n";
   std::size_t triangles = 0;
   int written = 0;
@@ -145,7 +148,7 @@ int run_gen(const GenArgs& a) {
       catalogue += csv_field(model.name) + ',' + csv_field(path) + ',' + csv_field(label) + ',' +
                    inventory + ',' + csv_field(title) + ',' + csv_field(artist) + ',' +
                    csv_field(provenance.period) + ',' + csv_field(provenance.material) +
-                   ",CC0 (generated)\n";
+                   ",CC0 (generated),+z\n";
       labels += csv_field(model.name) + ',' + csv_field(path) + ',' + csv_field(label) + '\n';
     }
   }

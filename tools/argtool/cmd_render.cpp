@@ -12,12 +12,14 @@
 #include "render/render_model.hpp"
 #include "render/upright_frame.hpp"
 #include "render_input.hpp"
+#include "up_option.hpp"
 
 namespace {
 
 struct RenderArgs {
   std::string mesh, output, view = "front", shading = "smooth", title, surface = "mu";
   std::string colours_output;  // also the surface in its own colours, without the graph
+  std::string up;              // the file axis that points up, for --view upright
   int level = 2, size = 512;
   bool no_legend = false, no_graph = false;
   arg::BuildOptions options;
@@ -49,7 +51,14 @@ int run_render(const RenderArgs& a) {
     throw std::runtime_error("--level " + std::to_string(a.level) + " is finer than --levels " +
                              std::to_string(a.options.levels));
   const arg::NodePositions model = arg::node_positions(argtool::read_mesh_file(a.mesh), a.options);
-  if (a.view == "upright") ro.view = arg::upright_view(arg::upright_frame(model.mesh));
+  if (a.view == "upright") {
+    // The surface is posed: the file's axes are the pose's columns.
+    arg::UprightHint hint;
+    hint.file_axes = model.pose.rotation;
+    hint.up = argtool::file_up(a.mesh, a.up);
+    hint.prefer_file_axes = true;
+    ro.view = arg::upright_view(arg::upright_frame(model.mesh, hint));
+  }
   const std::size_t nodes = model.levels[std::size_t(a.level)].centre.size();
   ro.title = a.title.empty() ? std::filesystem::path(a.mesh).filename().string() + "  level " +
                                    std::to_string(a.level) + ": " + std::to_string(nodes) +
@@ -91,6 +100,7 @@ const bool registered = argtool::register_command(
              "front, side, top, AZIMUTH,ELEVATION[,ROLL] in degrees (principal axes, the longest "
              "upright), or upright (resting on its broadest base, argtool upright)")
           ->capture_default_str();
+      argtool::add_up_option(app, a->up);
       app.add_option("--shading", a->shading, "flat or smooth")
           ->check(CLI::IsMember({"flat", "smooth"}))
           ->capture_default_str();

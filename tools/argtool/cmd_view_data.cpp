@@ -16,6 +16,7 @@
 #include "plugin_libraries.hpp"
 #include "render/upright_frame.hpp"
 #include "render_input.hpp"
+#include "up_option.hpp"
 
 namespace {
 
@@ -26,6 +27,7 @@ constexpr std::size_t kMaxTextureBytes = std::size_t(32) << 20;
 
 struct ViewDataArgs {
   std::string mesh, texture, output, texture_output;
+  std::string up;  // the file axis that points up (--up), for the view's start
   long max_triangles = 500000;
   arg::BuildOptions options;
 };
@@ -141,7 +143,10 @@ int run_view_data(const ViewDataArgs& a) {
   const auto nv = std::size_t(m.V.rows()), nf = std::size_t(m.F.rows());
   std::string out = "{\"format\":1,";
   // The canonical view (argtool upright) in the same frame: the 3D view starts from it.
-  const arg::UprightFrame frame = arg::upright_frame(m);
+  arg::UprightHint hint;
+  hint.file_axes = p.pose.rotation, hint.up = argtool::file_up(a.mesh, a.up);
+  hint.prefer_file_axes = true;
+  const arg::UprightFrame frame = arg::upright_frame(m, hint);
   put_array(out, "up", 3, [&](std::size_t i) { put_number(out, frame.up[long(i)]); });
   out += ',';
   put_array(out, "front", 3, [&](std::size_t i) { put_number(out, frame.front[long(i)]); });
@@ -235,6 +240,7 @@ const bool registered = argtool::register_command(
                      "refuse a mesh with more triangles than this (too large to display)")
           ->check(CLI::Range(1L, 100000000L))
           ->capture_default_str();
+      argtool::add_up_option(app, a->up);
       argtool::add_build_flags(app, a->options);
       return [a] { return run_view_data(*a); };
     });

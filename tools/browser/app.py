@@ -145,7 +145,7 @@ def model_view(model_id: int) -> viewdata.View:
     if row is None:
         raise viewdata.ViewUnavailable(f"there is no model {model_id} in the catalogue", 404)
     return viewdata.convert(model_id, row["file"], row["mesh"], row["triangles"], row["texture"],
-                            row["options"])
+                            row["options"], row["up"])
 
 
 def unavailable(why: viewdata.ViewUnavailable) -> JSONResponse:

@@ -118,14 +118,23 @@ def ranked_with(conn: psycopg.Connection[Any], query: pgarg.Arg, k: int, filters
         return cur.execute(statement, [query, weights, *filters.values(), k]).fetchall()
 
 
+def has_up(conn: psycopg.Connection[Any]) -> bool:
+    """Whether the table keeps each file's up axis (tools/demo/load.sql makes the column `up`; a
+    table made otherwise may not have it, and its pictures then find up from the shape)."""
+    return conn.execute("SELECT EXISTS (SELECT FROM information_schema.columns WHERE table_name = %s "
+                        "AND column_name = 'up' AND table_schema = ANY (current_schemas(false)))",
+                        (TABLE,)).fetchone()[0]
+
+
 def stored_mesh(conn: psycopg.Connection[Any], model_id: int) -> Optional[Dict[str, Any]]:
     """The mesh as stored, its file name, its number of triangles, the texture stored beside it
-    (an OBJ's) and the build options of its stored ARG (a picture's graph must be that one); None
-    when there is no such id."""
+    (an OBJ's), the build options of its stored ARG (a picture's graph must be that one) and the
+    file's up axis from the catalogue ('' when none); None when there is no such id."""
     statement = sql.SQL(
         "SELECT file, mesh, texture, (arg_info(descr)->>'triangles')::bigint AS triangles, "
-        "coalesce(arg_info(descr)->>'options', '') AS options "
-        "FROM {} WHERE id = %s").format(sql.Identifier(TABLE))
+        "coalesce(arg_info(descr)->>'options', '') AS options, {} AS up "
+        "FROM {} WHERE id = %s").format(sql.SQL("coalesce(up, '')" if has_up(conn) else "''"),
+                                        sql.Identifier(TABLE))
     with conn.cursor(row_factory=dict_row) as cur:
         row = cur.execute(statement, (model_id,)).fetchone()
     for column in ("mesh", "texture"):

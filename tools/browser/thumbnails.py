@@ -17,26 +17,38 @@ import psycopg
 TABLE = "objects"
 
 
+def has_up(conn: psycopg.Connection) -> bool:
+    """Whether the table keeps each file's up axis (the column `up` that tools/demo/load.sql makes
+    from a catalogue's `up`); without it, the pictures find up from the shape."""
+    return conn.execute("SELECT EXISTS (SELECT FROM information_schema.columns WHERE table_name = %s "
+                        "AND column_name = 'up' AND table_schema = ANY (current_schemas(false)))",
+                        (TABLE,)).fetchone()[0]
+
+
 def render_one(argtool: str, size: int, model_id: int, scratch: Path, timeout: float) -> Tuple[int, Optional[str]]:
     """Renders one model from the mesh stored in the table (so from what the server built, not a
     file that may have moved since) and stores both PNGs. Returns (id, None) or (id, why not)."""
     with psycopg.connect(autocommit=True) as conn:
-        row = conn.execute(f"SELECT file, mesh FROM {TABLE} WHERE id = %s", (model_id,)).fetchone()
+        # The catalogue's up axis of the file, where the table keeps one (tools/demo/load.sql).
+        up = "coalesce(up, '')" if has_up(conn) else "''"
+        row = conn.execute(f"SELECT file, mesh, {up} FROM {TABLE} WHERE id = %s", (model_id,)).fetchone()
         if row is None:
             return model_id, "gone from the table"
-        file, mesh = row
+        file, mesh, up = row
         # argtool reads the format from the file name's suffix.
         mesh_path = scratch / f"{model_id}{Path(file).suffix.lower() or '.off'}"
         mesh_path.write_bytes(bytes(mesh))
         colours_path = scratch / f"{model_id}-colours.png"
         mu_path = scratch / f"{model_id}-mu.png"
         try:
-            # Both in the canonical view (resting on its broadest base, seen from its front:
-            # argtool upright), from one computation of mu. A blank caption: the page prints
+            # Both in the canonical view (the catalogue's up when it gives one, else the side it
+            # stands on, seen from its front: argtool upright), from one computation of mu. A
+            # blank caption: the page prints
             # the title; the colour legend would be unreadable at this size.
             done = subprocess.run(
                 [argtool, "render", str(mesh_path), "-o", str(mu_path), "--colours-output", str(colours_path),
-                 "--size", str(size), "--view", "upright", "--no-legend", "--title", " "],
+                 "--size", str(size), "--view", "upright", "--no-legend", "--title", " "]
+                + ([f"--up={up}"] if up else []),
                 capture_output=True, text=True, timeout=timeout)
         except subprocess.TimeoutExpired:
             return model_id, f"argtool render took more than {timeout:.0f} s"
@@ -44,7 +56,9 @@ def render_one(argtool: str, size: int, model_id: int, scratch: Path, timeout: f
             mesh_path.unlink(missing_ok=True)
         if done.returncode != 0:
             lines = (done.stderr.strip() or done.stdout.strip() or f"exit status {done.returncode}").splitlines()
-            return model_id, lines[-1]
+            # An option argtool refuses (a stored up that is not an axis) is followed by a hint line.
+            kept = [line for line in lines if not line.startswith("Run with --help")] or lines
+            return model_id, kept[-1]
         pictures = [colours_path.read_bytes(), mu_path.read_bytes()]
         colours_path.unlink()
         mu_path.unlink()

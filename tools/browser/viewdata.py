@@ -56,25 +56,27 @@ def run_argtool(args: List[str], slow: str, failed: str) -> None:
         raise ViewUnavailable(slow, 503) from None
     if done.returncode != 0:
         lines = (done.stderr.strip() or done.stdout.strip() or f"exit status {done.returncode}").splitlines()
-        why = lines[-1]
+        # An option argtool refuses (a stored up that is not an axis) is followed by a hint line.
+        why = ([line for line in lines if not line.startswith("Run with --help")] or lines)[-1]
         raise ViewUnavailable(f"{failed}: {why}", 413 if "too large to display" in why else 422)
 
 
-_cache: "OrderedDict[Tuple[str, str, str, str], View]" = OrderedDict()
+_cache: "OrderedDict[Tuple[str, str, str, str, str], View]" = OrderedDict()
 _uploads: "OrderedDict[str, Tuple[str, bytes]]" = OrderedDict()
 _lock = threading.Lock()
 
 
 def convert(model_id: int, file: str, mesh: Optional[bytes], triangles: Optional[int],
-            texture: Optional[bytes] = None, options: str = "") -> View:
+            texture: Optional[bytes] = None, options: str = "", up: str = "") -> View:
     """The view of one stored mesh (with the texture stored beside it, for OBJ), its graph built
-    with the stored ARG's build OPTIONS; raises ViewUnavailable with the reason."""
+    with the stored ARG's build OPTIONS, starting with the file axis UP up when the catalogue
+    gives one; raises ViewUnavailable with the reason."""
     if mesh is None:
         raise ViewUnavailable(f"model {model_id} has no mesh stored: there is nothing to show in 3D", 404)
     if triangles is not None and triangles > MAX_TRIANGLES:
         raise ViewUnavailable(f"model {model_id} is too large to display in 3D: {triangles:,} triangles, "
                               f"more than {MAX_TRIANGLES:,}", 413)
-    return convert_bytes(f"model {model_id}", file, mesh, texture, options)
+    return convert_bytes(f"model {model_id}", file, mesh, texture, options, up)
 
 
 def keep_upload(file: str, mesh: bytes) -> str:
@@ -111,13 +113,13 @@ def texture_of(view: View, what: str) -> Tuple[bytes, str]:
 
 
 def convert_bytes(what: str, file: str, mesh: bytes, texture: Optional[bytes] = None,
-                  options: str = "") -> View:
+                  options: str = "", up: str = "") -> View:
     """The view of MESH (named WHAT in messages) by `argtool view-data`, its graph built with the
     build OPTIONS (empty: the defaults), kept for reuse by its bytes, texture, suffix and options
-    text (not by WHAT, which only a failure's message, never kept, names). An upload passes no
+    text and UP (not by WHAT, which only a failure's message, never kept, names). An upload passes no
     options and a catalogue object its value's written out, so the two keep separate views."""
     key = (hashlib.sha256(mesh).hexdigest(), hashlib.sha256(texture or b"").hexdigest(),
-           Path(file or "").suffix.lower(), options)
+           Path(file or "").suffix.lower(), options, up)
     with _lock:
         if key in _cache:
             _cache.move_to_end(key)
@@ -134,6 +136,8 @@ def convert_bytes(what: str, file: str, mesh: bytes, texture: Optional[bytes] = 
                 "--texture-output", str(image)]
         if options:
             args += ["--build-options", options]
+        if up:
+            args.append(f"--up={up}")  # one word: a value with a leading - is never an option
         if texture:
             (Path(scratch) / "given-texture").write_bytes(texture)
             args += ["--texture", str(Path(scratch) / "given-texture")]

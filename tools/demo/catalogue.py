@@ -6,10 +6,11 @@
 Every .off .obj .ply .stl .glb file under DIR is a row. When DIR/catalogue.csv exists, its rows
 give the files' metadata: a `file` (or `path`) column names each file relative to DIR, and the
 columns whose names the demo's table knows fill them (title; class, category or type;
-inventory_no or inventory; artist or maker; period or date; material; licence or license,
-case ignored). Files the catalogue does not list are loaded with their name as title; rows
-whose file is missing are reported on stderr and left out. Output header:
-model_id,path,class,inventory_no,title,artist,period,material,licence.
+inventory_no or inventory; artist or maker; period or date; material; licence or license;
+up or up_axis, the file axis that points up: +x, -x, +y, -y, +z or -z; case ignored). Files
+the catalogue does not list are loaded with their name as title; rows whose file is missing,
+and up values that are not an axis, are reported on stderr and left out. Output header:
+model_id,path,class,inventory_no,title,artist,period,material,licence,up.
 """
 
 import csv
@@ -18,7 +19,7 @@ import sys
 
 EXTENSIONS = {".off", ".obj", ".ply", ".stl", ".glb"}
 OUT_COLUMNS = ["model_id", "path", "class", "inventory_no", "title", "artist", "period",
-               "material", "licence"]
+               "material", "licence", "up"]
 # The demo table's column for each name a catalogue may use.
 ALIASES = {
     "title": "title", "name": "title",
@@ -28,7 +29,17 @@ ALIASES = {
     "period": "period", "date": "period",
     "material": "material",
     "licence": "licence", "license": "licence",
+    "up": "up", "up_axis": "up",
 }
+# The up values argtool's --up accepts, as this catalogue writes them.
+UP_AXES = {f"{sign}{axis}" for sign in "+-" for axis in "xyz"}
+
+
+def up_axis(value: str) -> "str | None":
+    """A catalogue's up value as +x ... -z (case and spaces ignored, no sign meaning +), or None."""
+    text = "".join(value.split()).lower()
+    text = text if text[:1] in ("+", "-") else "+" + text
+    return text if text in UP_AXES else None
 
 
 def main() -> int:
@@ -60,6 +71,14 @@ def main() -> int:
                     for name, column in names.items():
                         if name in ALIASES and (row.get(column) or "").strip():
                             meta.setdefault(ALIASES[name], row[column].strip())
+                    if "up" in meta:
+                        axis = up_axis(meta["up"])
+                        if axis is None:
+                            print(f"demo: {listed.name} gives {rel!r} the up {meta['up']!r}, not one "
+                                  f"of +x, -x, +y, -y, +z, -z: it is left out", file=sys.stderr)
+                            del meta["up"]
+                        else:
+                            meta["up"] = axis
                     known[path] = meta
         print(f"demo: {len(known)} files described by {listed.name}", file=sys.stderr)
     out = csv.writer(sys.stdout, lineterminator="\n")

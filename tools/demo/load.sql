@@ -1,6 +1,6 @@
 -- Loads a catalogue of meshes into objects; run by tools/demo/run.sh.
 -- stdin: the catalogue CSV (model_id,path,class,inventory_no,title,artist,period,material,
--- licence).
+-- licence,up).
 -- Variables: mode (sample|user), dir (base of relative paths), script (a scratch file),
 -- every (a progress line per this many models).
 -- The client reads the mesh files (\lo_import) and sends them: the server never reads the
@@ -23,6 +23,7 @@ CREATE TABLE objects (
   licence      text,
   model_id     text UNIQUE,          -- the demo's name of the file
   file         text,
+  up           text,                 -- the file axis that points up (+y, -z, ...), if known
   sha256       text UNIQUE,          -- how the Python client's loader knows a file it loaded
   mesh         bytea,
   texture      bytea,                -- for OBJ files that keep it outside
@@ -33,9 +34,9 @@ CREATE TABLE objects (
 
 CREATE TEMP TABLE catalogue (
   n serial, model_id text, path text, class text, inventory_no text, title text, artist text,
-  period text, material text, licence text
+  period text, material text, licence text, up text
 );
-\copy catalogue (model_id, path, class, inventory_no, title, artist, period, material, licence) FROM pstdin WITH (FORMAT csv, HEADER true)
+\copy catalogue (model_id, path, class, inventory_no, title, artist, period, material, licence, up) FROM pstdin WITH (FORMAT csv, HEADER true)
 
 SELECT count(*) AS total FROM catalogue \gset
 
@@ -46,8 +47,9 @@ SELECT count(*) AS total FROM catalogue \gset
 \o :script
 SELECT format(E'\\lo_import %s\n'
               '\\set lo :LASTOID\n'
-              'INSERT INTO objects (id, model_id, inventory_no, title, class, artist, period, material, licence, file, mesh)\n'
-              '  SELECT n, model_id, nullif(inventory_no, ''''), title, class, artist, period, material, licence, %L, lo_get(:lo)\n'
+              'INSERT INTO objects (id, model_id, inventory_no, title, class, artist, period, material, licence, up, file, mesh)\n'
+              '  SELECT n, model_id, nullif(inventory_no, ''''), title, class, artist, period, material, licence,\n'
+              '         nullif(up, ''''), %L, lo_get(:lo)\n'
               '  FROM catalogue WHERE n = %s;\n'
               '%s'
               'SELECT lo_unlink(:lo) \\g /dev/null\n'
