@@ -547,7 +547,7 @@ class Browser:
                 ActionChains(self.d).move_to_element(canvas).click().perform()
                 picked = int(self.d.find_element(By.ID, "view3d").get_attribute("data-picked"))
                 expect(picked >= 0, "a click on the textured surface picked no node")
-                with urllib.request.urlopen(self.url + "object/999997/texture", timeout=WAIT) as answer:
+                with urllib.request.urlopen(self.url + "object/999997/texture/0", timeout=WAIT) as answer:
                     kind, image = answer.headers.get("Content-Type", ""), answer.read()
                 expect(kind == "image/png" and image == textured_glb.checker_png(),
                        f"the texture route sends {kind} of {len(image)} bytes, not the GLB's PNG")
@@ -560,6 +560,40 @@ class Browser:
             magenta, green = self.checker_pixels(self.picture(self.texture_mapped("an uploaded textured GLB")))
             expect(magenta > 500 and green > 500,
                    f"the upload's 3D view: {magenta} magenta, {green} green pixels")
+
+    @staticmethod
+    def blue_pixels(picture: Image.Image) -> int:
+        """How many pixels have the hue of two_textures_glb's south, shaded (blue, not mu's cyan)."""
+        return sum(1 for r, g, b in picture.getdata() if b > 60 and r < 0.35 * b and g < 0.5 * b)
+
+    def view_maps_each_primitives_texture(self) -> None:
+        glb = textured_glb.two_textures_glb()
+        with psycopg.connect(autocommit=True) as conn:
+            conn.execute("INSERT INTO objects (id, model_id, title, class, file, mesh) "
+                         "VALUES (999996, 'two-textures', 'Two textures', 'globe', 'two.glb', %s)", (glb,))
+            try:
+                self.open("object/999996", "#view3d")
+                shot = self.picture(self.texture_mapped("a GLB of two textures"))
+                magenta, green = self.checker_pixels(shot)
+                blue = self.blue_pixels(shot)
+                # The colours baked from a texture look like it too: the view says how many of its
+                # materials draw their texture.
+                maps = self.d.find_element(By.ID, "view3d").get_attribute("data-maps")
+                expect(maps == "2" and magenta > 300 and green > 300 and blue > 300,
+                       f"each primitive's texture, the south's times its factor: {maps} textures drawn, "
+                       f"{magenta} magenta, {green} green, {blue} blue pixels")
+                view = json.loads(urllib.request.urlopen(self.url + "object/999996/view.json", timeout=WAIT).read())
+                factors = [t["factor"] for t in view["textures"]]
+                expect(len(view["images"]) == 2 and factors == [[1, 1, 1], [0.1, 0.2, 1]],
+                       f"view.json lists {len(view['images'])} images, factors {factors}")
+                with urllib.request.urlopen(self.url + "object/999996/texture/1", timeout=WAIT) as answer:
+                    second = answer.read()
+                expect(second == textured_glb.south_png(),
+                       f"texture/1 sends {len(second)} bytes, not the GLB's second PNG")
+                status, _, page = self.http("GET", "object/999996/texture/2")
+                expect(status == 404 and "no texture image 2" in page, f"texture/2: HTTP {status}: {page[:200]!r}")
+            finally:
+                conn.execute("DELETE FROM objects WHERE id = 999996")
 
     def views_follow_the_stored_options(self) -> None:
         # The demo's table builds every value with the defaults; another catalogue may not. What
@@ -628,6 +662,8 @@ class Browser:
              self.bad_view_input_is_clear),
             ("a textured GLB's 3D view maps its texture, uploaded too; mu replaces it, a click picks",
              self.view_maps_a_texture),
+            ("a GLB's primitives each map their own texture, times their baseColorFactor",
+             self.view_maps_each_primitives_texture),
             ("the 3D view and the pair picture build graphs with the stored value's options",
              self.views_follow_the_stored_options),
             ("the browser listens on 127.0.0.1 only", self.listens_on_localhost_only),

@@ -170,9 +170,9 @@ async def view(model_id: int) -> Response:
     return Response(shown.data, media_type="application/json", headers={"Cache-Control": "max-age=3600"})
 
 
-def texture_response(shown: viewdata.View, what: str) -> Response:
+def texture_response(shown: viewdata.View, what: str, index: int) -> Response:
     try:
-        image, media_type = viewdata.texture_of(shown, what)
+        image, media_type = viewdata.texture_of(shown, what, index)
     except viewdata.ViewUnavailable as why:
         return unavailable(why)
     return Response(image, media_type=media_type, headers={
@@ -180,12 +180,14 @@ def texture_response(shown: viewdata.View, what: str) -> Response:
 
 
 @app.get("/object/{model_id}/texture")
-async def texture(model_id: int) -> Response:
-    """The texture the 3D view maps (PNG or JPEG); a reason as {"error": ...} when there is none."""
+@app.get("/object/{model_id}/texture/{index}")
+async def texture(model_id: int, index: int = 0) -> Response:
+    """Image INDEX of the textures the 3D view maps (PNG or JPEG, in view.json's "images");
+    a reason as {"error": ...} when there is none."""
     shown = await stored_view(model_id)
     if isinstance(shown, Response):
         return shown
-    return texture_response(shown, f"model {model_id}")
+    return texture_response(shown, f"model {model_id}", index)
 
 
 @app.get("/object/{model_id}/graph.svg")
@@ -322,10 +324,12 @@ async def upload_view(key: str) -> Response:
 
 
 @app.get("/upload/{key}/texture")
-async def upload_texture(key: str) -> Response:
-    """The texture an upload's 3D view maps (a GLB's own); a reason as {"error": ...} when none."""
+@app.get("/upload/{key}/texture/{index}")
+async def upload_texture(key: str, index: int = 0) -> Response:
+    """Image INDEX of the textures an upload's 3D view maps (a GLB's own); a reason as
+    {"error": ...} when there is none."""
     try:
         shown = await run_in_threadpool(viewdata.convert_upload, key)
     except viewdata.ViewUnavailable as why:
         return unavailable(why)
-    return texture_response(shown, "the upload")
+    return texture_response(shown, "the upload", index)
