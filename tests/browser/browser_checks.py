@@ -12,6 +12,7 @@ import time
 import urllib.error
 import urllib.request
 import uuid
+import zipfile
 from pathlib import Path
 from typing import Any, Dict, List, Optional, Tuple
 
@@ -79,7 +80,7 @@ class Browser:
         self.wait(EC.staleness_of(old))
         self.wait(EC.presence_of_element_located((By.CSS_SELECTOR, ready)))
 
-    def upload(self, path: Path, ready: str) -> None:
+    def upload(self, path: "Path | List[Path]", ready: str) -> None:
         """Sends a file from the upload page and waits for the answer's element (CSS selector).
         Tried up to three times on an error of the driver itself: on a loaded machine Chromium
         has answered "node does not belong to the document" for the file input it had just found
@@ -87,7 +88,9 @@ class Browser:
         for attempt in range(3):
             try:
                 self.open("upload", "#mesh")
-                self.d.find_element(By.ID, "mesh").send_keys(str(path))
+                # Several files at once: their paths, one a line (a multiple file input).
+                paths = path if isinstance(path, list) else [path]
+                self.d.find_element(By.ID, "mesh").send_keys("\n".join(str(p) for p in paths))
                 self.click_to(self.d.find_element(By.CSS_SELECTOR, "#upload button"), ready)
                 return
             except WebDriverException:
@@ -595,6 +598,44 @@ class Browser:
             finally:
                 conn.execute("DELETE FROM objects WHERE id = 999996")
 
+    def upload_obj_with_mtl_and_texture(self) -> None:
+        obj, mtl = textured_glb.globe_obj()
+        with tempfile.TemporaryDirectory() as scratch:
+            folder = Path(scratch)
+            (folder / "model.obj").write_text(obj)
+            (folder / "model.mtl").write_text(mtl)
+            (folder / "checker.png").write_bytes(textured_glb.checker_png())
+            self.upload([folder / "model.obj", folder / "model.mtl", folder / "checker.png"], "#ranked")
+            shot = self.picture(self.texture_mapped("an OBJ uploaded with its MTL and texture"))
+            magenta, green = self.checker_pixels(shot)
+            expect(magenta > 500 and green > 500,
+                   f"the uploaded OBJ's 3D view: {magenta} magenta, {green} green pixels")
+            note = self.d.find_element(By.ID, "upload-texture").text
+            expect("checker.png" in note, f"the page says {note!r} of the texture")
+        # The same as a zip, and a zip that is not one: a 4xx page saying why, no traceback.
+        archive = io.BytesIO()
+        with zipfile.ZipFile(archive, "w") as z:
+            z.writestr("globe/model.obj", obj)
+            z.writestr("globe/model.mtl", mtl)
+            z.writestr("globe/textures/checker.png", textured_glb.checker_png())
+        for name, data, want in (("globe.zip", archive.getvalue(), 200), ("broken.zip", b"PK\3\4 cut", 400)):
+            boundary = uuid.uuid4().hex
+            body = (f"--{boundary}\r\nContent-Disposition: form-data; name=\"mesh\"; filename=\"{name}\"\r\n"
+                    f"Content-Type: application/zip\r\n\r\n").encode() + data + f"\r\n--{boundary}--\r\n".encode()
+            status, _, page = self.http("POST", "upload", body,
+                                        {"Content-Type": f"multipart/form-data; boundary={boundary}"})
+            expect(status == want and "Traceback" not in page,
+                   f"{name}: HTTP {status}, not {want}: {re.sub(r'<[^>]+>', ' ', page)[:300]!r}")
+            if want == 200:
+                expect("Shown with its texture checker.png" in page, f"{name}: the page does not name its texture")
+                key = re.search(r'/upload/([0-9a-f]+)/view\.json', page)
+                expect(key is not None, f"{name}: no 3D view on the page")
+                assert key is not None
+                with urllib.request.urlopen(self.url + f"upload/{key.group(1)}/texture/0", timeout=WAIT) as answer:
+                    expect(answer.read() == textured_glb.checker_png(), f"{name}: the texture route sends another image")
+            else:
+                expect("broken.zip is not a zip that can be read" in page, f"{name}: the page does not say why")
+
     def views_follow_the_stored_options(self) -> None:
         # The demo's table builds every value with the defaults; another catalogue may not. What
         # the browser hands view-data and render-match is the stored value's own options.
@@ -664,6 +705,8 @@ class Browser:
              self.view_maps_a_texture),
             ("a GLB's primitives each map their own texture, times their baseColorFactor",
              self.view_maps_each_primitives_texture),
+            ("an OBJ uploaded with its MTL and texture (files or a zip) is shown textured; a bad zip is a 4xx",
+             self.upload_obj_with_mtl_and_texture),
             ("the 3D view and the pair picture build graphs with the stored value's options",
              self.views_follow_the_stored_options),
             ("the browser listens on 127.0.0.1 only", self.listens_on_localhost_only),

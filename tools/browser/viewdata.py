@@ -61,7 +61,7 @@ def run_argtool(args: List[str], slow: str, failed: str) -> None:
 
 
 _cache: "OrderedDict[Tuple[str, str, str, str], View]" = OrderedDict()
-_uploads: "OrderedDict[str, Tuple[str, bytes]]" = OrderedDict()
+_uploads: "OrderedDict[str, Tuple[str, bytes, Optional[bytes]]]" = OrderedDict()
 _lock = threading.Lock()
 
 
@@ -77,11 +77,14 @@ def convert(model_id: int, file: str, mesh: Optional[bytes], triangles: Optional
     return convert_bytes(f"model {model_id}", file, mesh, texture, options)
 
 
-def keep_upload(file: str, mesh: bytes) -> str:
-    """Keeps an uploaded mesh for its 3D view (the last KEEP_UPLOADS) and returns its key."""
-    key = hashlib.sha256(mesh).hexdigest()[:32]
+def keep_upload(file: str, mesh: bytes, texture: Optional[bytes] = None) -> str:
+    """Keeps an uploaded mesh, with the texture sent for it (an OBJ's), for its 3D view (the last
+    KEEP_UPLOADS) and returns its key."""
+    digest = hashlib.sha256(mesh)
+    digest.update(hashlib.sha256(texture or b"").digest())
+    key = digest.hexdigest()[:32]
     with _lock:
-        _uploads[key] = (file, mesh)
+        _uploads[key] = (file, mesh, texture)
         _uploads.move_to_end(key)
         while len(_uploads) > KEEP_UPLOADS:
             _uploads.popitem(last=False)
@@ -94,8 +97,8 @@ def convert_upload(key: str) -> View:
         kept = _uploads.get(key)
     if kept is None:
         raise ViewUnavailable("this upload is no longer kept for the 3D view: upload it again", 404)
-    file, mesh = kept
-    return convert_bytes(f"the upload {file}", file, mesh)
+    file, mesh, texture = kept
+    return convert_bytes(f"the upload {file}", file, mesh, texture)
 
 
 def texture_of(view: View, what: str, index: int = 0) -> Tuple[bytes, str]:
