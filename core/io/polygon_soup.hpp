@@ -1,15 +1,31 @@
 // The polygon soup every mesh reader fills before triangulation, and the builder that checks it.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "common/limits.hpp"
+#include "io/image.hpp"
 #include "io/texture_sampling.hpp"
 
 namespace arg::io {
+
+// An image a reader found for display: as the file has it, and decoded.
+struct DisplayImage {
+  std::string encoded;
+  Image image;
+};
+
+// How faces map an image: its index in the images, its sampler, and the colour that multiplies
+// it (a glTF material's baseColorFactor, RGB).
+struct DisplayMap {
+  int image = 0;
+  TextureSampler sampler;
+  std::array<float, 3> factor{1, 1, 1};
+};
 
 // Vertices and polygons as the file stores them, with whatever colour or texture coordinates it
 // carries. Optional per-element arrays are either empty or full length, NaN meaning "not given".
@@ -25,11 +41,13 @@ struct PolygonSoup {
   // "vertex", "material" when a reader computed per-face colour itself, as the GLB reader does).
   std::string face_colour_source = "face";
   // For display only (read_mesh's MeshTexture), kept when keep_display_texture is set: a reader
-  // that samples its own textures (GLB) puts the corner texture coordinates of the faces of one
-  // texture in corner_uv, that texture's encoded bytes here and its sampler beside them.
+  // that samples its own textures (GLB) puts the corner texture coordinates of its textured
+  // faces in corner_uv, each image they use in display_images, each (image, sampler, factor) in
+  // display_maps and each face's map in face_display_map (-1: none; empty when no face has one).
   bool keep_display_texture = false;
-  std::string display_texture;
-  TextureSampler display_sampler;
+  std::vector<DisplayImage> display_images;
+  std::vector<DisplayMap> display_maps;
+  std::vector<int> face_display_map;
   std::size_t faces_seen = 0;     // faces in the file, including skipped ones
   std::size_t faces_skipped = 0;  // faces with fewer than three corners
 

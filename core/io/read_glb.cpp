@@ -5,6 +5,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -328,9 +329,9 @@ class GlbReader {
         throw_input_error("GLB", what, "COLOR_0 is not a VEC3 or VEC4 per vertex");
       }
     }
-    // The faces of the first texture that decodes keep their coordinates for display.
-    const bool display = uv && out_.soup().keep_display_texture &&
-                         keep_for_display(model_.textures[std::size_t(texture)].source, sampler);
+    // The faces of every texture that decodes keep their coordinates and map for display.
+    const int display =
+        uv && out_.soup().keep_display_texture ? display_map(texture, *image, sampler, factor) : -1;
     if (uv) {
       textured_ = true;
     } else if (colour) {
@@ -364,7 +365,7 @@ class GlbReader {
           st[k][1] = uv->value(t[std::size_t(k)], 1);
         }
         rgb = triangle_texture_colour(*image, st, sampler);
-        if (display) keep_corner_uvs(face, st, flip);
+        if (display >= 0 && face >= 0) keep_corner_uvs(face, st, flip, display);
       } else if (colour) {
         rgb = {0, 0, 0};
         for (int k = 0; k < 3; ++k) {
@@ -378,21 +379,31 @@ class GlbReader {
     out_.set_locator({});
   }
 
-  // Whether the faces of image `source` keep their texture coordinates for display: the first
-  // textured image read is the one kept (its bytes and sampler go to the soup), others are not.
-  bool keep_for_display(int source, const TextureSampler& sampler) {
+  // The index in the soup's display maps of texture `texture` (whose image decoded to `image`)
+  // multiplied by `factor`, added with its image on first use.
+  int display_map(int texture, const Image& image, const TextureSampler& sampler,
+                  const std::array<double, 4>& factor) {
     PolygonSoup& soup = out_.soup();
-    if (display_source_ < 0) {
-      display_source_ = source;
-      soup.display_texture = std::string(encoded_[source]);
-      soup.display_sampler = sampler;
+    const std::array<float, 3> rgb{float(factor[0]), float(factor[1]), float(factor[2])};
+    const auto key = std::make_pair(texture, rgb);
+    const auto found = display_maps_.find(key);
+    if (found != display_maps_.end()) return found->second;
+    const int source = model_.textures[std::size_t(texture)].source;
+    auto image_index = display_images_.find(source);
+    if (image_index == display_images_.end()) {
+      image_index = display_images_.emplace(source, int(soup.display_images.size())).first;
+      soup.display_images.push_back({std::string(encoded_[source]), image});
     }
-    return source == display_source_;
+    const int map = int(soup.display_maps.size());
+    soup.display_maps.push_back({image_index->second, sampler, rgb});
+    display_maps_.emplace(key, map);
+    return map;
   }
 
   // Corner texture coordinates of `face` in its corner order (corners 1 and 2 swapped when the
-  // transform mirrors); non-finite ones are left unset, as the colour sampling tolerates them.
-  void keep_corner_uvs(int face, const double st[3][2], bool flip) {
+  // transform mirrors), and its display map; non-finite ones leave the face without either, as
+  // the colour sampling tolerates them.
+  void keep_corner_uvs(int face, const double st[3][2], bool flip, int map) {
     float uv[6];
     for (int k = 0; k < 3; ++k) {
       const int from = flip && k > 0 ? 3 - k : k;
@@ -402,6 +413,9 @@ class GlbReader {
     for (float x : uv)
       if (!std::isfinite(x)) return;
     out_.set_corner_uvs(face, uv, 3);
+    std::vector<int>& maps = out_.soup().face_display_map;
+    if (maps.size() <= std::size_t(face)) maps.resize(std::size_t(face) + 1, -1);
+    maps[std::size_t(face)] = map;
   }
 
   const tinygltf::Model& model_;
@@ -410,7 +424,9 @@ class GlbReader {
   std::vector<char> visited_;
   std::map<int, std::optional<Image>> images_;
   std::map<int, std::string_view> encoded_;  // each image's bytes, as texture_image found them
-  int display_source_ = -1;
+  std::map<int, int> display_images_;        // glTF image -> index in the soup's display images
+  // (glTF texture, factor) -> index in the soup's display maps
+  std::map<std::pair<int, std::array<float, 3>>, int> display_maps_;
   bool textured_ = false, vertex_coloured_ = false, material_coloured_ = false;
 };
 

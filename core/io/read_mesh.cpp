@@ -1,6 +1,9 @@
 // Reading a mesh from bytes in memory: format dispatch, texture, triangulation and the report.
 #include "io/read_mesh.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <optional>
 
 #include "common/errors.hpp"
@@ -62,22 +65,42 @@ Mesh read_mesh(std::string_view bytes, const ReadOptions& options, ReadReport* r
   }
   io::TextureSampler sampler;  // OBJ and PLY: repeat, v = 0 at the bottom
   std::vector<float> triangle_uv;
+  std::vector<int> triangle_face;
   Mesh mesh = io::soup_to_mesh(soup, texture ? &*texture : nullptr, sampler, builder, report,
-                               texture_out ? &triangle_uv : nullptr);
+                               texture_out ? &triangle_uv : nullptr,
+                               texture_out ? &triangle_face : nullptr);
   if (texture_out) {
     *texture_out = MeshTexture{};
-    // The texture the coordinates refer to: the caller's (OBJ, PLY), or the one a GLB's reader
-    // kept (it decoded it once already, so this cannot fail where that did not).
+    // The textures the coordinates refer to: the caller's (OBJ, PLY) for every triangle that
+    // has coordinates, or those a GLB's reader kept, by the map of each triangle's face.
+    const std::size_t triangles = triangle_face.size();
+    std::vector<int> map(triangles, -1);
     if (texture) {
-      texture_out->encoded = std::string(options.texture);
-      texture_out->image = std::move(*texture);
-      texture_out->sampler = sampler;
-    } else if (!soup.display_texture.empty()) {
-      texture_out->encoded = std::move(soup.display_texture);
-      texture_out->image = decode_image(texture_out->encoded, limits);
-      texture_out->sampler = soup.display_sampler;
+      texture_out->images.push_back({std::string(options.texture), std::move(*texture)});
+      texture_out->maps.push_back({0, sampler, {1, 1, 1}});
+      std::fill(map.begin(), map.end(), 0);
+    } else if (!soup.display_maps.empty()) {
+      texture_out->images = std::move(soup.display_images);
+      texture_out->maps = std::move(soup.display_maps);
+      for (std::size_t t = 0; t < triangles; ++t) {
+        const auto f = std::size_t(triangle_face[t]);
+        if (f < soup.face_display_map.size()) map[t] = soup.face_display_map[f];
+      }
     }
-    if (!texture_out->image.empty()) texture_out->uv = std::move(triangle_uv);
+    if (!texture_out->maps.empty()) {
+      for (std::size_t t = 0; t < triangles; ++t) {
+        bool finite = true;
+        for (std::size_t i = 0; i < 6; ++i)
+          finite = finite && std::isfinite(triangle_uv[6 * t + i]);
+        if (!finite || map[t] < 0) {
+          map[t] = -1;
+          std::fill_n(triangle_uv.begin() + std::ptrdiff_t(6 * t), 6,
+                      std::numeric_limits<float>::quiet_NaN());
+        }
+      }
+      texture_out->uv = std::move(triangle_uv);
+      texture_out->triangle_map = std::move(map);
+    }
   }
   report.vertices_read = soup.vertex_count();
   report.faces_read = soup.faces_seen;

@@ -9,6 +9,7 @@
 
 #include "common/limits.hpp"
 #include "io/image.hpp"
+#include "io/polygon_soup.hpp"
 #include "io/texture_sampling.hpp"
 #include "mesh/mesh.hpp"
 
@@ -50,23 +51,28 @@ struct ReadReport {
   std::vector<std::string> warnings;      // what was ignored, e.g. an unusable texture
 };
 
-// A texture and where it lies on each triangle, kept beside the mesh for display (the 3D view
-// maps it); the method never reads it, and the mesh is the same whether it is asked for or not.
+// The textures of a mesh and where they lie on each triangle, kept beside the mesh for display
+// (the 3D view maps them); the method never reads them, and the mesh is the same whether they
+// are asked for or not.
 struct MeshTexture {
-  std::string encoded;  // the image as the file or the caller gave it (PNG, JPEG, TGA, BMP)
-  Image image;          // the same, decoded
-  io::TextureSampler sampler;
+  // Each image once, as the file or the caller gave it (PNG, JPEG, TGA, BMP), and decoded.
+  std::vector<io::DisplayImage> images;
+  // How triangles map them: an image, its sampler, the colour multiplying it. An OBJ has one
+  // (its texture, white); a GLB one per base colour texture and baseColorFactor its materials use.
+  std::vector<io::DisplayMap> maps;
   // 6 per row of the mesh's F: (s, t) at corners 0, 1, 2; NaN for a triangle without them (a
-  // GLB primitive with another texture or none, an OBJ face without vt).
+  // GLB primitive without a texture, an OBJ face without vt).
   std::vector<float> uv;
+  // Per row of the mesh's F: its index in maps, or -1 (and NaN in uv) when it has none.
+  std::vector<int> triangle_map;
 
-  bool empty() const { return uv.empty() || image.empty(); }
+  bool empty() const { return maps.empty() || uv.empty(); }
 };
 
 // Parses `bytes` into a triangle mesh with per-triangle colour when the input has any.
 // Throws InputError (naming format and line/offset) or LimitError. With `texture`, also keeps
-// the texture coordinates of an OBJ read with its texture, or of a GLB's first base colour
-// texture that decodes (left empty when there is none).
+// the texture coordinates of an OBJ read with its texture, or of each GLB primitive whose base
+// colour texture decodes, with those textures (left empty when there is none).
 Mesh read_mesh(std::string_view bytes, const ReadOptions& options = {},
                ReadReport* report = nullptr, MeshTexture* texture = nullptr);
 

@@ -53,7 +53,8 @@ bool soup_has_texture_coordinates(const PolygonSoup& soup) {
 }
 
 Mesh soup_to_mesh(const PolygonSoup& soup, const Image* texture, const TextureSampler& sampler,
-                  SoupBuilder& out, ReadReport& report, std::vector<float>* triangle_uv) {
+                  SoupBuilder& out, ReadReport& report, std::vector<float>* triangle_uv,
+                  std::vector<int>* triangle_face) {
   const std::size_t nv = soup.vertex_count();
   const std::size_t nf = soup.face_count();
 
@@ -104,6 +105,7 @@ Mesh soup_to_mesh(const PolygonSoup& soup, const Image* texture, const TextureSa
     for (int c = 0; c < 3; ++c) mesh.F(t, c) = soup.corners[slots[std::size_t(t)][std::size_t(c)]];
   }
   report.triangles = slots.size();
+  if (triangle_face) *triangle_face = face_of;
   if (triangle_uv) {
     triangle_uv->assign(6 * slots.size(), std::numeric_limits<float>::quiet_NaN());
     if (soup_has_texture_coordinates(soup)) {

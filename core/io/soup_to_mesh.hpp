@@ -19,7 +19,8 @@ namespace arg::io {
 // triangle is left. With `triangle_uv`, also gives each triangle's texture coordinates as the
 // colouring above takes them (6 per triangle, NaN for one without), whatever `texture` is.
 Mesh soup_to_mesh(const PolygonSoup& soup, const Image* texture, const TextureSampler& sampler,
-                  SoupBuilder& out, ReadReport& report, std::vector<float>* triangle_uv = nullptr);
+                  SoupBuilder& out, ReadReport& report, std::vector<float>* triangle_uv = nullptr,
+                  std::vector<int>* triangle_face = nullptr);
 
 // Whether the soup has texture coordinates a texture could be sampled at.
 bool soup_has_texture_coordinates(const PolygonSoup& soup);

@@ -121,6 +121,7 @@ NodePositions node_positions_with_texture(const Mesh& input, const std::vector<f
   SurfaceTexture carried;
   carried.uv.assign(6 * std::size_t(nf), 0.0f);
   carried.textured.assign(std::size_t(nf), 0);
+  carried.origin = origin;
   // The input's corners in the surface's frame (only their positions are used: a mirroring
   // pose's turned faces do not matter here).
   const Vertices posed = apply_pose(input, out.pose).V;

@@ -13,6 +13,7 @@ namespace arg {
 struct SurfaceTexture {
   std::vector<float> uv;       // 6 per face of the surface: (s, t) at corners 0, 1, 2
   std::vector<char> textured;  // per face: 1 when uv holds its coordinates, 0 (and uv 0) if not
+  std::vector<int> origin;     // per face: the input triangle it comes from, -1 for one made
 };
 
 // node_positions(input, options), and in `texture` the input's texture coordinates (`input_uv`,

@@ -252,11 +252,12 @@ check "view-data: the file's (s, t) at each corner of the surface, the texture a
 import json, sys
 v = json.load(open(sys.argv[1]))
 faces = len(v["faces"]) // 3
-assert len(v["uvs"]) == 6 * faces and v["untextured_faces"] == [], v["uvs"]
-assert v["texture"] == {"type": "image/png", "width": 2, "height": 2, "wrap_s": "repeat",
-                        "wrap_t": "repeat"}, v["texture"]
+assert len(v["uvs"]) == 6 * faces and v["face_textures"] == [0] * faces, v["uvs"]
+assert v["textures"] == [{"image": 0, "wrap_s": "repeat", "wrap_t": "repeat",
+                          "factor": [1, 1, 1]}], v["textures"]
+assert v["images"] == [{"type": "image/png", "width": 2, "height": 2}], v["images"]
 assert v["texture_note"] is None and v["face_colours"][:3] == [255, 0, 0]
-assert open(sys.argv[2], "rb").read(8) == b"\x89PNG\r\n\x1a\n"
+assert open(sys.argv[2] + "-0", "rb").read(8) == b"\x89PNG\r\n\x1a\n"
 # Each vertex of the pyramid has one vt in the file: each place keeps its own (s, t).
 given = {(0, 0), (1, 0), (1, 1), (0, 1), (0.5, 0.5)}
 at = {}
@@ -273,7 +274,7 @@ PY
 check "view-data without --texture-output maps none (the colours baked from it stay)" python3 -c '
 import json, sys
 v = json.load(open(sys.argv[1]))
-assert v["uvs"] is None and v["texture"] is None and v["face_colours"][:3] == [255, 0, 0], v
+assert v["uvs"] is None and v["textures"] is None and v["face_colours"][:3] == [255, 0, 0], v
 ' "$work/plain.json"
 printf 'not an image' > "$work/bad.png"
 "$argtool" view-data "$work/square.obj" --texture "$work/bad.png" -o "$work/bad.json" \
@@ -290,9 +291,9 @@ check "view-data: an unreadable or too large texture is left out, saying why (ex
 import json, sys
 bad, wide = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
 assert sys.argv[3:] == ["0", "0"], sys.argv[3:]
-assert bad["uvs"] is None and bad["face_colours"] is None, bad["texture"]
+assert bad["uvs"] is None and bad["face_colours"] is None, bad["textures"]
 assert bad["texture_note"].startswith("the texture cannot be read (image: "), bad["texture_note"]
-assert wide["uvs"] is None and wide["face_colours"] is not None, wide["texture"]
+assert wide["uvs"] is None and wide["face_colours"] is not None, wide["textures"]
 assert "4097 x 1 pixels, more than the 3D view's 4096 a side" in wide["texture_note"], wide
 PY
 # 11. --up: the file axis a catalogue says is up is the pictures' up; a word that is not an
@@ -312,4 +313,29 @@ check "render --view upright --up writes the picture" bash -c \
 check "render --up +w is refused" bash -c \
   "! '$argtool' render '$cup' -o '$work/bad-up.png' --view upright --up +w 2> /dev/null"
 
+# 12. A GLB of two primitives with their own textures, one under a baseColorFactor: each face
+# maps its primitive's texture, both images are written, and the factor comes with its texture.
+PYTHONPATH=tests/browser python3 -c '
+import sys, textured_glb
+open(sys.argv[1], "wb").write(textured_glb.two_textures_glb(8, 16))' "$work/two.glb"
+"$argtool" view-data "$work/two.glb" -o "$work/two.json" --texture-output "$work/two-texture" \
+  > /dev/null 2>&1
+check "view-data: each primitive's own texture and baseColorFactor, both images written" \
+  python3 - "$work/two.json" "$work/two-texture" << 'PY'
+import json, sys
+v = json.load(open(sys.argv[1]))
+faces = len(v["faces"]) // 3
+assert v["textures"] == [
+    {"image": 0, "wrap_s": "repeat", "wrap_t": "repeat", "factor": [1, 1, 1]},
+    {"image": 1, "wrap_s": "repeat", "wrap_t": "repeat", "factor": [0.1, 0.2, 1]}], v["textures"]
+assert [i["width"] for i in v["images"]] == [64, 64], v["images"]
+counts = [v["face_textures"].count(t) for t in (-1, 0, 1)]
+# The globe's north maps texture 0, its south texture 1, halves of one surface.
+assert counts[0] == 0 and min(counts[1:]) > faces / 3, counts
+for t in (0, 1):
+    ys = [v["positions"][3 * v["faces"][3 * f] + 1] for f in range(faces) if v["face_textures"][f] == t]
+    assert abs(sum(ys) / len(ys)) > 0.1, (t, sum(ys) / len(ys))
+for i in (0, 1):
+    assert open(f"{sys.argv[2]}-{i}", "rb").read(8) == b"\x89PNG\r\n\x1a\n"
+PY
 echo "1..$n"

@@ -12,6 +12,7 @@ import time
 import urllib.error
 import urllib.request
 import uuid
+import zipfile
 from pathlib import Path
 from typing import Any, Dict, List, Optional, Tuple
 
@@ -79,7 +80,7 @@ class Browser:
         self.wait(EC.staleness_of(old))
         self.wait(EC.presence_of_element_located((By.CSS_SELECTOR, ready)))
 
-    def upload(self, path: Path, ready: str) -> None:
+    def upload(self, path: "Path | List[Path]", ready: str) -> None:
         """Sends a file from the upload page and waits for the answer's element (CSS selector).
         Tried up to three times on an error of the driver itself: on a loaded machine Chromium
         has answered "node does not belong to the document" for the file input it had just found
@@ -87,7 +88,9 @@ class Browser:
         for attempt in range(3):
             try:
                 self.open("upload", "#mesh")
-                self.d.find_element(By.ID, "mesh").send_keys(str(path))
+                # Several files at once: their paths, one a line (a multiple file input).
+                paths = path if isinstance(path, list) else [path]
+                self.d.find_element(By.ID, "mesh").send_keys("\n".join(str(p) for p in paths))
                 self.click_to(self.d.find_element(By.CSS_SELECTOR, "#upload button"), ready)
                 return
             except WebDriverException:
@@ -562,7 +565,7 @@ class Browser:
                 ActionChains(self.d).move_to_element(canvas).click().perform()
                 picked = int(self.d.find_element(By.ID, "view3d").get_attribute("data-picked"))
                 expect(picked >= 0, "a click on the textured surface picked no node")
-                with urllib.request.urlopen(self.url + "object/999997/texture", timeout=WAIT) as answer:
+                with urllib.request.urlopen(self.url + "object/999997/texture/0", timeout=WAIT) as answer:
                     kind, image = answer.headers.get("Content-Type", ""), answer.read()
                 expect(kind == "image/png" and image == textured_glb.checker_png(),
                        f"the texture route sends {kind} of {len(image)} bytes, not the GLB's PNG")
@@ -575,6 +578,78 @@ class Browser:
             magenta, green = self.checker_pixels(self.picture(self.texture_mapped("an uploaded textured GLB")))
             expect(magenta > 500 and green > 500,
                    f"the upload's 3D view: {magenta} magenta, {green} green pixels")
+
+    @staticmethod
+    def blue_pixels(picture: Image.Image) -> int:
+        """How many pixels have the hue of two_textures_glb's south, shaded (blue, not mu's cyan)."""
+        return sum(1 for r, g, b in picture.getdata() if b > 60 and r < 0.35 * b and g < 0.5 * b)
+
+    def view_maps_each_primitives_texture(self) -> None:
+        glb = textured_glb.two_textures_glb()
+        with psycopg.connect(autocommit=True) as conn:
+            conn.execute("INSERT INTO objects (id, model_id, title, class, file, mesh) "
+                         "VALUES (999996, 'two-textures', 'Two textures', 'globe', 'two.glb', %s)", (glb,))
+            try:
+                self.open("object/999996", "#view3d")
+                shot = self.picture(self.texture_mapped("a GLB of two textures"))
+                magenta, green = self.checker_pixels(shot)
+                blue = self.blue_pixels(shot)
+                # The colours baked from a texture look like it too: the view says how many of its
+                # materials draw their texture.
+                maps = self.d.find_element(By.ID, "view3d").get_attribute("data-maps")
+                expect(maps == "2" and magenta > 300 and green > 300 and blue > 300,
+                       f"each primitive's texture, the south's times its factor: {maps} textures drawn, "
+                       f"{magenta} magenta, {green} green, {blue} blue pixels")
+                view = json.loads(urllib.request.urlopen(self.url + "object/999996/view.json", timeout=WAIT).read())
+                factors = [t["factor"] for t in view["textures"]]
+                expect(len(view["images"]) == 2 and factors == [[1, 1, 1], [0.1, 0.2, 1]],
+                       f"view.json lists {len(view['images'])} images, factors {factors}")
+                with urllib.request.urlopen(self.url + "object/999996/texture/1", timeout=WAIT) as answer:
+                    second = answer.read()
+                expect(second == textured_glb.south_png(),
+                       f"texture/1 sends {len(second)} bytes, not the GLB's second PNG")
+                status, _, page = self.http("GET", "object/999996/texture/2")
+                expect(status == 404 and "no texture image 2" in page, f"texture/2: HTTP {status}: {page[:200]!r}")
+            finally:
+                conn.execute("DELETE FROM objects WHERE id = 999996")
+
+    def upload_obj_with_mtl_and_texture(self) -> None:
+        obj, mtl = textured_glb.globe_obj()
+        with tempfile.TemporaryDirectory() as scratch:
+            folder = Path(scratch)
+            (folder / "model.obj").write_text(obj)
+            (folder / "model.mtl").write_text(mtl)
+            (folder / "checker.png").write_bytes(textured_glb.checker_png())
+            self.upload([folder / "model.obj", folder / "model.mtl", folder / "checker.png"], "#ranked")
+            shot = self.picture(self.texture_mapped("an OBJ uploaded with its MTL and texture"))
+            magenta, green = self.checker_pixels(shot)
+            expect(magenta > 500 and green > 500,
+                   f"the uploaded OBJ's 3D view: {magenta} magenta, {green} green pixels")
+            note = self.d.find_element(By.ID, "upload-texture").text
+            expect("checker.png" in note, f"the page says {note!r} of the texture")
+        # The same as a zip, and a zip that is not one: a 4xx page saying why, no traceback.
+        archive = io.BytesIO()
+        with zipfile.ZipFile(archive, "w") as z:
+            z.writestr("globe/model.obj", obj)
+            z.writestr("globe/model.mtl", mtl)
+            z.writestr("globe/textures/checker.png", textured_glb.checker_png())
+        for name, data, want in (("globe.zip", archive.getvalue(), 200), ("broken.zip", b"PK\3\4 cut", 400)):
+            boundary = uuid.uuid4().hex
+            body = (f"--{boundary}\r\nContent-Disposition: form-data; name=\"mesh\"; filename=\"{name}\"\r\n"
+                    f"Content-Type: application/zip\r\n\r\n").encode() + data + f"\r\n--{boundary}--\r\n".encode()
+            status, _, page = self.http("POST", "upload", body,
+                                        {"Content-Type": f"multipart/form-data; boundary={boundary}"})
+            expect(status == want and "Traceback" not in page,
+                   f"{name}: HTTP {status}, not {want}: {re.sub(r'<[^>]+>', ' ', page)[:300]!r}")
+            if want == 200:
+                expect("Shown with its texture checker.png" in page, f"{name}: the page does not name its texture")
+                key = re.search(r'/upload/([0-9a-f]+)/view\.json', page)
+                expect(key is not None, f"{name}: no 3D view on the page")
+                assert key is not None
+                with urllib.request.urlopen(self.url + f"upload/{key.group(1)}/texture/0", timeout=WAIT) as answer:
+                    expect(answer.read() == textured_glb.checker_png(), f"{name}: the texture route sends another image")
+            else:
+                expect("broken.zip is not a zip that can be read" in page, f"{name}: the page does not say why")
 
     def views_follow_the_stored_options(self) -> None:
         # The demo's table builds every value with the defaults; another catalogue may not. What
@@ -645,6 +720,10 @@ class Browser:
              self.bad_view_input_is_clear),
             ("a textured GLB's 3D view maps its texture, uploaded too; mu replaces it, a click picks",
              self.view_maps_a_texture),
+            ("a GLB's primitives each map their own texture, times their baseColorFactor",
+             self.view_maps_each_primitives_texture),
+            ("an OBJ uploaded with its MTL and texture (files or a zip) is shown textured; a bad zip is a 4xx",
+             self.upload_obj_with_mtl_and_texture),
             ("the 3D view and the pair picture build graphs with the stored value's options",
              self.views_follow_the_stored_options),
             ("the browser listens on 127.0.0.1 only", self.listens_on_localhost_only),

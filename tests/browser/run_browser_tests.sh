@@ -71,6 +71,12 @@ start_browser() {
     tools/browser/server.sh stop "$work" && tools/browser/server.sh start "$work"
 }
 
+upload_files_pytest() {
+  (cd tests/browser && PYTHONDONTWRITEBYTECODE=1 "$python" -m pytest -q -p no:cacheprovider test_upload_files.py)
+}
+
+step "what a search by upload accepts: one mesh, an OBJ with its MTL and images, a zip (pytest)" \
+  upload_files_pytest
 step "a database for the browser's catalogue" make_database
 step "the sample catalogue loads as the demo loads it (tools/demo/load.sql)" load_catalogue
 step "every model gets PNG thumbnails in the table, own colours and mu (argtool render)" every_thumbnail

@@ -1,6 +1,7 @@
 // Tests of reading GLB: primitives, node transforms, colour sources and hostile files.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "common/errors.hpp"
@@ -215,19 +216,104 @@ TEST(ReadGlb, Texcoord0AndItsImageAreKeptForDisplay) {
   ReadReport report;
   const Mesh mesh = read_mesh(glb, {}, &report, &texture);
   ASSERT_FALSE(texture.empty());
-  EXPECT_EQ(texture.encoded.compare(0, 4, "\x89PNG"), 0);
-  EXPECT_EQ(texture.image.width, 4);
-  EXPECT_FALSE(texture.sampler.v_origin_bottom);
-  EXPECT_EQ(texture.sampler.wrap_s, io::TextureWrap::ClampToEdge);
-  EXPECT_EQ(texture.sampler.wrap_t, io::TextureWrap::Repeat);
+  ASSERT_EQ(texture.images.size(), 1u);
+  ASSERT_EQ(texture.maps.size(), 1u);
+  EXPECT_EQ(texture.images[0].encoded.compare(0, 4, "\x89PNG"), 0);
+  EXPECT_EQ(texture.images[0].image.width, 4);
+  const io::DisplayMap& map = texture.maps[0];
+  EXPECT_EQ(map.image, 0);
+  EXPECT_FALSE(map.sampler.v_origin_bottom);
+  EXPECT_EQ(map.sampler.wrap_s, io::TextureWrap::ClampToEdge);
+  EXPECT_EQ(map.sampler.wrap_t, io::TextureWrap::Repeat);
+  EXPECT_EQ(map.factor, (std::array<float, 3>{1, 1, 1}));
   const std::vector<float> expected = {0.3f, 0.2f, 0.6f, 0.2f, 0.4f, 0.3f,
                                        0.3f, 0.8f, 0.6f, 0.8f, 0.4f, 0.7f};
   EXPECT_EQ(texture.uv, expected);
+  EXPECT_EQ(texture.triangle_map, (std::vector<int>{0, 0}));
   const Mesh plain = read_mesh(glb);
   EXPECT_EQ(mesh.V, plain.V);
   EXPECT_EQ(mesh.F, plain.F);
   EXPECT_EQ(mesh.C, plain.C);
   EXPECT_EQ(report.colour_source, "texture");
+}
+
+// Three primitives of one mesh: a triangle with texture A, one with texture B and a factor, one
+// with only a factor; then a fourth with texture A again under another factor.
+std::string three_materials_glb(bool fourth = false) {
+  const auto plain = [](std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+    return test_io::encode_image("png", 2, 2, [=](int, int) {
+      return std::array<std::uint8_t, 3>{r, g, b};
+    });
+  };
+  Gltf g;
+  const int tri = g.accessor(floats({0, 0, 0, 1, 0, 0, 0, 1, 0}), kFloat, 3, "VEC3");
+  const int far = g.accessor(floats({5, 0, 0, 6, 0, 0, 5, 1, 0}), kFloat, 3, "VEC3");
+  const int top = g.accessor(floats({0, 5, 0, 1, 5, 0, 0, 6, 0}), kFloat, 3, "VEC3");
+  const int back = g.accessor(floats({0, 0, 5, 1, 0, 5, 0, 1, 5}), kFloat, 3, "VEC3");
+  const int uv = g.accessor(floats({0.1, 0.1, 0.9, 0.1, 0.1, 0.9}), kFloat, 3, "VEC2");
+  const int a = g.view(plain(200, 0, 200)), b = g.view(plain(0, 180, 0));
+  const auto prim = [&](int pos, int material, bool textured) {
+    return "{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
+           (textured ? ",\"TEXCOORD_0\":" + std::to_string(uv) : std::string()) +
+           "},\"material\":" + std::to_string(material) + "}";
+  };
+  std::string prims = prim(tri, 0, true) + "," + prim(far, 1, true) + "," + prim(top, 2, false);
+  if (fourth) prims += "," + prim(back, 3, true);
+  return g.glb("\"meshes\":[{\"primitives\":[" + prims + "]}]," + kOneNode +
+               ",\"materials\":["
+               "{\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":0}}},"
+               "{\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":1},"
+               "\"baseColorFactor\":[0.5,1,0.25,1]}},"
+               "{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.2,0.4,0.6,1]}},"
+               "{\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":0},"
+               "\"baseColorFactor\":[1,0.5,1,1]}}],"
+               "\"textures\":[{\"source\":0},{\"source\":1,\"sampler\":0}],"
+               "\"samplers\":[{\"wrapS\":33648}],"
+               "\"images\":[{\"bufferView\":" +
+               std::to_string(a) + ",\"mimeType\":\"image/png\"},{\"bufferView\":" +
+               std::to_string(b) + ",\"mimeType\":\"image/png\"}]");
+}
+
+TEST(ReadGlb, EachPrimitiveKeepsItsOwnTextureAndFactorForDisplay) {
+  MeshTexture texture;
+  ReadReport report;
+  const std::string glb = three_materials_glb();
+  const Mesh mesh = read_mesh(glb, {}, &report, &texture);
+  ASSERT_EQ(mesh.F.rows(), 3);
+  ASSERT_EQ(texture.images.size(), 2u);
+  ASSERT_EQ(texture.maps.size(), 2u);
+  EXPECT_EQ(texture.triangle_map, (std::vector<int>{0, 1, -1}));
+  EXPECT_EQ(texture.maps[0].image, 0);
+  EXPECT_EQ(texture.maps[1].image, 1);
+  EXPECT_EQ(texture.maps[0].factor, (std::array<float, 3>{1, 1, 1}));
+  EXPECT_EQ(texture.maps[1].factor, (std::array<float, 3>{0.5f, 1, 0.25f}));
+  EXPECT_EQ(texture.maps[0].sampler.wrap_s, io::TextureWrap::Repeat);
+  EXPECT_EQ(texture.maps[1].sampler.wrap_s, io::TextureWrap::MirroredRepeat);
+  EXPECT_EQ(texture.images[1].image.width, 2);
+  EXPECT_EQ(texture.images[1].image.rgb[1], 180);  // green: image B
+  for (std::size_t i = 0; i < 12; ++i) EXPECT_FALSE(std::isnan(texture.uv[i])) << i;
+  for (std::size_t i = 12; i < 18; ++i) EXPECT_TRUE(std::isnan(texture.uv[i])) << i;
+  // The colours the ARG is built from: each texture times its factor, and the untextured
+  // primitive's factor; the same whether the display textures are asked for or not.
+  const Mesh plain = read_mesh(glb);
+  EXPECT_EQ(mesh.C, plain.C);
+  EXPECT_NEAR(mesh.C(0, 0), 200.0 / 255, 1e-3);
+  EXPECT_NEAR(mesh.C(1, 0), 0, 1e-6);
+  EXPECT_NEAR(mesh.C(1, 1), 180.0 / 255, 1e-3);
+  EXPECT_NEAR(mesh.C(1, 2), 0, 1e-6);
+  EXPECT_NEAR(mesh.C(2, 0), 0.2, 1e-6);
+  EXPECT_NEAR(mesh.C(2, 2), 0.6, 1e-6);
+  EXPECT_EQ(report.colour_source, "texture");
+}
+
+TEST(ReadGlb, ATextureUnderTwoFactorsIsTwoMapsOfOneImage) {
+  MeshTexture texture;
+  read_mesh(three_materials_glb(true), {}, nullptr, &texture);
+  ASSERT_EQ(texture.images.size(), 2u);
+  ASSERT_EQ(texture.maps.size(), 3u);
+  EXPECT_EQ(texture.triangle_map, (std::vector<int>{0, 1, -1, 2}));
+  EXPECT_EQ(texture.maps[2].image, 0);
+  EXPECT_EQ(texture.maps[2].factor, (std::array<float, 3>{1, 0.5f, 1}));
 }
 
 TEST(ReadGlb, AMirroringNodeKeepsEachCornersTextureCoordinates) {

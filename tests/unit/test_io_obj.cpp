@@ -105,11 +105,15 @@ TEST(ReadObj, TextureCoordinatesAreKeptPerCornerForDisplay) {
   MeshTexture texture;
   const Mesh mesh = read_mesh(obj, options, nullptr, &texture);
   ASSERT_FALSE(texture.empty());
-  EXPECT_EQ(texture.encoded, png);
-  EXPECT_EQ(texture.image.width, 4);
-  EXPECT_TRUE(texture.sampler.v_origin_bottom);
+  ASSERT_EQ(texture.images.size(), 1u);
+  ASSERT_EQ(texture.maps.size(), 1u);
+  EXPECT_EQ(texture.images[0].encoded, png);
+  EXPECT_EQ(texture.images[0].image.width, 4);
+  EXPECT_TRUE(texture.maps[0].sampler.v_origin_bottom);
+  EXPECT_EQ(texture.maps[0].factor, (std::array<float, 3>{1, 1, 1}));
   const std::vector<float> expected = {0, 0, 1, 0, 1, 1, 0.5f, 0.5f, 1, 1, 0, 1};
   EXPECT_EQ(texture.uv, expected);
+  EXPECT_EQ(texture.triangle_map, (std::vector<int>{0, 0}));
   // The same mesh and colours as a read that does not ask for them.
   const Mesh plain = read_mesh(obj, options);
   EXPECT_EQ(mesh.V, plain.V);

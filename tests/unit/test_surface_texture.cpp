@@ -54,8 +54,13 @@ TEST(SurfaceTexture, TheSurfaceIsNodePositionsOwnAndEachCornerKeepsItsCoordinate
   const auto nf = std::size_t(p.mesh.F.rows());
   ASSERT_EQ(texture.uv.size(), 6 * nf);
   ASSERT_EQ(texture.textured.size(), nf);
+  ASSERT_EQ(texture.origin.size(), nf);
   for (std::size_t f = 0; f < nf; ++f) {
     ASSERT_TRUE(texture.textured[f]) << "face " << f;
+    // Its origin is the input triangle its colour comes from (the 3D view maps its texture).
+    const int from = texture.origin[f];
+    ASSERT_TRUE(from >= 0 && from < input.F.rows()) << "face " << f << ": " << from;
+    EXPECT_EQ(p.mesh.C.row(long(f)), input.C.row(from));
     double seam[3];
     for (int k = 0; k < 3; ++k) {
       const Eigen::Vector3d x = unposed(p, p.mesh.V.row(p.mesh.F(long(f), k)).transpose());
@@ -98,7 +103,13 @@ TEST(SurfaceTexture, TrianglesWithoutCoordinatesGiveFacesWithout) {
   SurfaceTexture texture;
   node_positions_with_texture(input, uv, {}, &texture);
   std::size_t bare = 0;
-  for (char t : texture.textured) bare += !t;
+  for (std::size_t f = 0; f < texture.textured.size(); ++f) {
+    bare += !texture.textured[f];
+    // The face without coordinates still has its origin: triangle 0.
+    if (!texture.textured[f]) {
+      EXPECT_EQ(texture.origin[f], 0);
+    }
+  }
   EXPECT_EQ(bare, 1u);
 }
 

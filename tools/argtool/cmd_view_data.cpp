@@ -5,6 +5,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "command_registry.hpp"
 #include "common/errors.hpp"
@@ -24,6 +25,8 @@ namespace {
 // device, and the page sends it as it is; larger ones are shown in the colours baked from them.
 constexpr int kMaxTextureSide = 4096;
 constexpr std::size_t kMaxTextureBytes = std::size_t(32) << 20;
+// The most images one view maps (a page loads each): the faces of others show their colours.
+constexpr std::size_t kMaxTextureImages = 16;
 
 struct ViewDataArgs {
   std::string mesh, texture, output, texture_output;
@@ -82,24 +85,64 @@ const char* wrap_name(arg::io::TextureWrap wrap) {
   return "repeat";
 }
 
-// Writes the texture for the page (PNG and JPEG as given, others as PNG) and returns its MIME
-// type, or "" with the reason in `note` when it is too large to map.
-std::string write_texture(const arg::MeshTexture& texture, const std::string& path,
-                          std::string& note) {
-  const arg::Image& image = texture.image;
-  if (image.width > kMaxTextureSide || image.height > kMaxTextureSide) {
-    note = "the texture is " + std::to_string(image.width) + " x " + std::to_string(image.height) +
-           " pixels, more than the 3D view's " + std::to_string(kMaxTextureSide) +
-           " a side: shown in the colours taken from it";
-    return {};
-  }
-  const char* type = image_type(texture.encoded);
-  if (type && texture.encoded.size() <= kMaxTextureBytes) {
-    argtool::write_file_bytes(path, texture.encoded);
+// Writes one image for the page (PNG and JPEG as given, others as PNG); returns its MIME type.
+std::string write_image(const arg::io::DisplayImage& image, const std::string& path) {
+  const char* type = image_type(image.encoded);
+  if (type && image.encoded.size() <= kMaxTextureBytes) {
+    argtool::write_file_bytes(path, image.encoded);
     return type;
   }
-  argtool::write_png(image, path);
+  argtool::write_png(image.image, path);
   return "image/png";
+}
+
+void add_note(std::string& note, const std::string& more) {
+  note += (note.empty() ? "" : "; ") + more;
+}
+
+// The textures the page maps: the images written (image i at PATH-i) with their MIME types, and
+// the maps of those (their image renumbered). An image too large to map, or past the first
+// kMaxTextureImages, is left out with the reason in `note`: its faces keep their colours.
+struct PageTextures {
+  std::vector<std::string> types;         // per image written
+  std::vector<arg::io::DisplayMap> maps;  // those whose image was written
+  std::vector<int> map_of;                // per map of the mesh: its index in maps, or -1
+  std::vector<int> image_of;              // per image of the mesh: its index in types, or -1
+};
+
+PageTextures write_textures(const arg::MeshTexture& texture, const std::string& path,
+                            std::string& note) {
+  PageTextures out;
+  std::size_t too_many = 0;
+  for (const arg::io::DisplayImage& image : texture.images) {
+    const int w = image.image.width, h = image.image.height;
+    if (w > kMaxTextureSide || h > kMaxTextureSide) {
+      add_note(note, "a texture is " + std::to_string(w) + " x " + std::to_string(h) +
+                         " pixels, more than the 3D view's " + std::to_string(kMaxTextureSide) +
+                         " a side: shown in the colours taken from it");
+      out.image_of.push_back(-1);
+    } else if (out.types.size() == kMaxTextureImages) {
+      ++too_many;
+      out.image_of.push_back(-1);
+    } else {
+      out.image_of.push_back(int(out.types.size()));
+      out.types.push_back(write_image(image, path + "-" + std::to_string(out.types.size())));
+    }
+  }
+  if (too_many)
+    add_note(note, std::to_string(too_many) + " textures past the first " +
+                       std::to_string(kMaxTextureImages) +
+                       " are shown in the colours taken from them");
+  for (const arg::io::DisplayMap& map : texture.maps) {
+    const int image = map.image >= 0 && std::size_t(map.image) < out.image_of.size()
+                          ? out.image_of[std::size_t(map.image)]
+                          : -1;
+    out.map_of.push_back(image < 0 ? -1 : int(out.maps.size()));
+    if (image < 0) continue;
+    out.maps.push_back(map);
+    out.maps.back().image = image;
+  }
+  return out;
 }
 
 // Numbers as JSON text: 6 significant digits are below a pixel on any screen; NaN cannot occur
@@ -131,14 +174,15 @@ int run_view_data(const ViewDataArgs& a) {
     throw std::runtime_error("too large to display: " + std::to_string(input.F.rows()) +
                              " triangles, more than the limit of " +
                              std::to_string(a.max_triangles));
-  std::string type;
-  if (!texture.empty()) type = write_texture(texture, a.texture_output, note);
+  PageTextures page;
+  if (!texture.empty()) page = write_textures(texture, a.texture_output, note);
+  const bool mapped = !page.maps.empty();
   // The surface the graph was built on, in the ARG's frame (principal axes on x, y, z), so
   // that the nodes sit where the ARG measured them; with a texture, its coordinates on it.
   arg::SurfaceTexture uv;
   const arg::NodePositions p =
-      type.empty() ? arg::node_positions(input, a.options)
-                   : arg::node_positions_with_texture(input, texture.uv, a.options, &uv);
+      mapped ? arg::node_positions_with_texture(input, texture.uv, a.options, &uv)
+             : arg::node_positions(input, a.options);
   const arg::Mesh& m = p.mesh;
   const auto nv = std::size_t(m.V.rows()), nf = std::size_t(m.F.rows());
   std::string out = "{\"format\":1,";
@@ -167,29 +211,45 @@ int run_view_data(const ViewDataArgs& a) {
     out += "\"face_colours\":null";
   }
   out += ',';
-  // The texture's coordinates per corner of each face (v = 0 at the image's bottom row, as
-  // three.js takes them), the faces without any, and the image's size and wrapping; or nulls,
-  // with the reason in texture_note when the file has a texture that is not mapped.
-  if (!type.empty()) {
-    const bool flip = !texture.sampler.v_origin_bottom;
+  // The textures' coordinates per corner of each face (v = 0 at the image's bottom row, as
+  // three.js takes them), each face's texture (-1: none, drawn in its colour), the textures
+  // (an image, its wrapping, the colour multiplying it) and the images (written at PATH-i); or
+  // nulls, with the reason in texture_note when the file has a texture that is not mapped.
+  if (mapped) {
+    std::vector<int> face_texture(nf, -1);
+    for (std::size_t f = 0; f < nf; ++f) {
+      const int from = uv.origin[f];
+      if (!uv.textured[f] || from < 0) continue;
+      const int map = texture.triangle_map[std::size_t(from)];
+      if (map >= 0) face_texture[f] = page.map_of[std::size_t(map)];
+    }
     put_array(out, "uvs", 6 * nf, [&](std::size_t i) {
-      const float x = uv.uv[i];
+      const int map = face_texture[i / 6];
+      const float x = map < 0 ? 0.0f : uv.uv[i];
+      const bool flip = map >= 0 && !page.maps[std::size_t(map)].sampler.v_origin_bottom;
       put_number(out, flip && i % 2 ? 1.0 - x : x);
     });
     out += ',';
-    std::vector<std::size_t> bare;
-    for (std::size_t f = 0; f < nf; ++f)
-      if (!uv.textured[f]) bare.push_back(f);
-    put_array(out, "untextured_faces", bare.size(),
-              [&](std::size_t i) { out += std::to_string(bare[i]); });
-    out += ",\"texture\":" + nlohmann::json{{"type", type},
-                                            {"width", texture.image.width},
-                                            {"height", texture.image.height},
-                                            {"wrap_s", wrap_name(texture.sampler.wrap_s)},
-                                            {"wrap_t", wrap_name(texture.sampler.wrap_t)}}
-                                 .dump();
+    put_array(out, "face_textures", nf,
+              [&](std::size_t f) { out += std::to_string(face_texture[f]); });
+    nlohmann::json textures = nlohmann::json::array(), images = nlohmann::json::array();
+    // The factor as the file wrote it (a float read back: 0.1, not 0.100000001).
+    const auto decimal = [](float x) { return std::round(double(x) * 1e6) / 1e6; };
+    for (const arg::io::DisplayMap& map : page.maps)
+      textures.push_back(
+          {{"image", map.image},
+           {"wrap_s", wrap_name(map.sampler.wrap_s)},
+           {"wrap_t", wrap_name(map.sampler.wrap_t)},
+           {"factor", {decimal(map.factor[0]), decimal(map.factor[1]), decimal(map.factor[2])}}});
+    for (std::size_t i = 0; i < texture.images.size(); ++i) {
+      if (page.image_of[i] < 0) continue;
+      images.push_back({{"type", page.types[std::size_t(page.image_of[i])]},
+                        {"width", texture.images[i].image.width},
+                        {"height", texture.images[i].image.height}});
+    }
+    out += ",\"textures\":" + textures.dump() + ",\"images\":" + images.dump();
   } else {
-    out += "\"uvs\":null,\"untextured_faces\":null,\"texture\":null";
+    out += "\"uvs\":null,\"face_textures\":null,\"textures\":null,\"images\":null";
   }
   out += ",\"texture_note\":" + (note.empty() ? std::string("null") : nlohmann::json(note).dump());
   out += ',';
@@ -218,9 +278,13 @@ int run_view_data(const ViewDataArgs& a) {
   argtool::write_file_bytes(a.output, out);
   std::printf("wrote %s (%zu vertices, %zu triangles, %zu levels)\n", a.output.c_str(), nv, nf,
               p.levels.size());
-  if (!type.empty())
-    std::printf("wrote %s (%s, %d x %d)\n", a.texture_output.c_str(), type.c_str(),
-                texture.image.width, texture.image.height);
+  for (std::size_t i = 0; i < texture.images.size(); ++i) {
+    const int written = page.image_of.empty() ? -1 : page.image_of[i];
+    if (written < 0) continue;
+    std::printf("wrote %s-%d (%s, %d x %d)\n", a.texture_output.c_str(), written,
+                page.types[std::size_t(written)].c_str(), texture.images[i].image.width,
+                texture.images[i].image.height);
+  }
   if (!note.empty()) std::printf("note: %s\n", note.c_str());
   return 0;
 }
@@ -234,8 +298,8 @@ const bool registered = argtool::register_command(
       app.add_option("-o,--output", a->output, "JSON to write")->required();
       app.add_option("--texture", a->texture, "texture image for OBJ")->check(CLI::ExistingFile);
       app.add_option("--texture-output", a->texture_output,
-                     "where to write the texture the view maps (PNG or JPEG), with its "
-                     "coordinates in the JSON; without it, none is mapped");
+                     "where to write the textures the view maps: image i (from 0) at PATH-i, "
+                     "PNG or JPEG, with their coordinates in the JSON; without it, none is mapped");
       app.add_option("--max-triangles", a->max_triangles,
                      "refuse a mesh with more triangles than this (too large to display)")
           ->check(CLI::Range(1L, 100000000L))

@@ -17,6 +17,7 @@ import catalogue
 import errors
 import pair_picture
 import pgarg
+import upload_files
 import viewdata
 
 HERE = Path(__file__).resolve().parent
@@ -170,9 +171,9 @@ async def view(model_id: int) -> Response:
     return Response(shown.data, media_type="application/json", headers={"Cache-Control": "max-age=3600"})
 
 
-def texture_response(shown: viewdata.View, what: str) -> Response:
+def texture_response(shown: viewdata.View, what: str, index: int) -> Response:
     try:
-        image, media_type = viewdata.texture_of(shown, what)
+        image, media_type = viewdata.texture_of(shown, what, index)
     except viewdata.ViewUnavailable as why:
         return unavailable(why)
     return Response(image, media_type=media_type, headers={
@@ -180,12 +181,14 @@ def texture_response(shown: viewdata.View, what: str) -> Response:
 
 
 @app.get("/object/{model_id}/texture")
-async def texture(model_id: int) -> Response:
-    """The texture the 3D view maps (PNG or JPEG); a reason as {"error": ...} when there is none."""
+@app.get("/object/{model_id}/texture/{index}")
+async def texture(model_id: int, index: int = 0) -> Response:
+    """Image INDEX of the textures the 3D view maps (PNG or JPEG, in view.json's "images");
+    a reason as {"error": ...} when there is none."""
     shown = await stored_view(model_id)
     if isinstance(shown, Response):
         return shown
-    return texture_response(shown, f"model {model_id}")
+    return texture_response(shown, f"model {model_id}", index)
 
 
 @app.get("/object/{model_id}/graph.svg")
@@ -290,25 +293,40 @@ def rank_upload(data: bytes, params: Dict[str, str]) -> "tuple[Dict[str, Any], L
         return form, catalogue.ranked(conn, query, form["k"], form["filters"])
 
 
+async def read_upload(form_data: Any) -> upload_files.Upload:
+    """The files of the form's "mesh" input, at most MAX_UPLOAD_BYTES in all, checked by
+    upload_files.collect (one mesh; for an OBJ, its MTL and images; or a zip of them)."""
+    given = [f for f in form_data.getlist("mesh") if isinstance(f, UploadFile) and f.filename]
+    files, left = [], MAX_UPLOAD_BYTES
+    for f in given[:upload_files.MAX_FILES + 1]:
+        data = await f.read(left + 1)
+        if len(data) > left:
+            what = upload_files.last_part(f.filename or "") if len(given) == 1 else "the files sent"
+            raise errors.BadUpload(f"{what} {'is' if len(given) == 1 else 'are'} larger than "
+                                   f"{MAX_UPLOAD_BYTES // (1024 * 1024)} MB", status_code=413)
+        left -= len(data)
+        files.append((f.filename or "", data))
+    try:
+        return upload_files.collect(files, MAX_UPLOAD_BYTES)
+    except upload_files.BadFiles as why:
+        raise errors.BadUpload(why.message, status_code=why.status_code) from None
+
+
 @app.post("/upload", response_class=HTMLResponse)
 async def upload(request: Request) -> HTMLResponse:
     form_data = await request.form()
-    mesh = form_data.get("mesh")
-    if not isinstance(mesh, UploadFile) or not mesh.filename:
-        raise errors.BadUpload("choose a mesh file (OFF, OBJ, PLY, STL or GLB) to search with")
-    data = await mesh.read(MAX_UPLOAD_BYTES + 1)
-    if len(data) > MAX_UPLOAD_BYTES:
-        raise errors.BadUpload(f"{mesh.filename} is larger than {MAX_UPLOAD_BYTES // (1024 * 1024)} MB",
-                               status_code=413)
+    sent = await read_upload(form_data)
     params = {key: value for key, value in form_data.items() if isinstance(value, str)}
     try:
-        form, rows = await run_in_threadpool(rank_upload, data, params)
+        # The ARG of the mesh alone, as the catalogue's are built: a texture is for the view.
+        form, rows = await run_in_threadpool(rank_upload, sent.mesh, params)
     except psycopg.Error as error:
-        raise errors.ServerRefused(mesh.filename, error) from error
+        raise errors.ServerRefused(sent.name, error) from error
     # The upload in 3D beside its ranking (its view.json is made when the page asks for it).
-    view_src = f"/upload/{viewdata.keep_upload(mesh.filename, data)}/view.json" if three_installed() else None
-    return page(request, "ranked.html", query=None, upload_name=mesh.filename, rows=rows,
-                action=None, upload_view=view_src, **form)
+    view_src = (f"/upload/{viewdata.keep_upload(sent.name, sent.mesh, sent.texture)}/view.json"
+                if three_installed() else None)
+    return page(request, "ranked.html", query=None, upload_name=sent.name, rows=rows, action=None,
+                upload_view=view_src, upload_texture=sent.texture_name, upload_notes=sent.notes, **form)
 
 
 @app.get("/upload/{key}/view.json")
@@ -322,10 +340,12 @@ async def upload_view(key: str) -> Response:
 
 
 @app.get("/upload/{key}/texture")
-async def upload_texture(key: str) -> Response:
-    """The texture an upload's 3D view maps (a GLB's own); a reason as {"error": ...} when none."""
+@app.get("/upload/{key}/texture/{index}")
+async def upload_texture(key: str, index: int = 0) -> Response:
+    """Image INDEX of the textures an upload's 3D view maps (a GLB's own, an OBJ's sent with
+    it); a reason as {"error": ...} when there is none."""
     try:
         shown = await run_in_threadpool(viewdata.convert_upload, key)
     except viewdata.ViewUnavailable as why:
         return unavailable(why)
-    return texture_response(shown, "the upload")
+    return texture_response(shown, "the upload", index)

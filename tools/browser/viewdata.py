@@ -31,10 +31,10 @@ TEXTURE_MAGIC = {"image/png": b"\x89PNG\r\n\x1a\n", "image/jpeg": b"\xff\xd8\xff
 
 
 class View(NamedTuple):
-    """A mesh's 3D view: the JSON of argtool view-data, and the texture it maps (None if none)."""
+    """A mesh's 3D view: the JSON of argtool view-data, and the images its textures map (each
+    with its MIME type, in the order of the JSON's "images"; none when it maps no texture)."""
     data: bytes
-    texture: Optional[bytes]
-    texture_type: str
+    images: Tuple[Tuple[bytes, str], ...]
 
 
 class ViewUnavailable(Exception):
@@ -62,7 +62,7 @@ def run_argtool(args: List[str], slow: str, failed: str) -> None:
 
 
 _cache: "OrderedDict[Tuple[str, str, str, str, str], View]" = OrderedDict()
-_uploads: "OrderedDict[str, Tuple[str, bytes]]" = OrderedDict()
+_uploads: "OrderedDict[str, Tuple[str, bytes, Optional[bytes]]]" = OrderedDict()
 _lock = threading.Lock()
 
 
@@ -79,11 +79,14 @@ def convert(model_id: int, file: str, mesh: Optional[bytes], triangles: Optional
     return convert_bytes(f"model {model_id}", file, mesh, texture, options, up)
 
 
-def keep_upload(file: str, mesh: bytes) -> str:
-    """Keeps an uploaded mesh for its 3D view (the last KEEP_UPLOADS) and returns its key."""
-    key = hashlib.sha256(mesh).hexdigest()[:32]
+def keep_upload(file: str, mesh: bytes, texture: Optional[bytes] = None) -> str:
+    """Keeps an uploaded mesh, with the texture sent for it (an OBJ's), for its 3D view (the last
+    KEEP_UPLOADS) and returns its key."""
+    digest = hashlib.sha256(mesh)
+    digest.update(hashlib.sha256(texture or b"").digest())
+    key = digest.hexdigest()[:32]
     with _lock:
-        _uploads[key] = (file, mesh)
+        _uploads[key] = (file, mesh, texture)
         _uploads.move_to_end(key)
         while len(_uploads) > KEEP_UPLOADS:
             _uploads.popitem(last=False)
@@ -96,20 +99,25 @@ def convert_upload(key: str) -> View:
         kept = _uploads.get(key)
     if kept is None:
         raise ViewUnavailable("this upload is no longer kept for the 3D view: upload it again", 404)
-    file, mesh = kept
-    return convert_bytes(f"the upload {file}", file, mesh)
+    file, mesh, texture = kept
+    return convert_bytes(f"the upload {file}", file, mesh, texture)
 
 
-def texture_of(view: View, what: str) -> Tuple[bytes, str]:
-    """The texture a view maps and its MIME type, checked again before it is sent: a PNG or a JPEG
-    by its first bytes, at most MAX_TEXTURE_BYTES; ViewUnavailable (404, 422) otherwise."""
-    if view.texture is None:
+def texture_of(view: View, what: str, index: int = 0) -> Tuple[bytes, str]:
+    """Image INDEX of a view's textures and its MIME type, checked again before it is sent: a
+    PNG or a JPEG by its first bytes, at most MAX_TEXTURE_BYTES; ViewUnavailable (404, 422)
+    otherwise."""
+    if not view.images:
         raise ViewUnavailable(f"{what} has no texture the 3D view maps", 404)
-    magic = TEXTURE_MAGIC.get(view.texture_type)
-    if magic is None or not view.texture.startswith(magic) or len(view.texture) > MAX_TEXTURE_BYTES:
+    if not 0 <= index < len(view.images):
+        raise ViewUnavailable(f"{what} has no texture image {index}: its 3D view maps "
+                              f"{len(view.images)} (0 to {len(view.images) - 1})", 404)
+    image, kind = view.images[index]
+    magic = TEXTURE_MAGIC.get(kind)
+    if magic is None or not image.startswith(magic) or len(image) > MAX_TEXTURE_BYTES:
         raise ViewUnavailable(f"the texture of {what} is not a PNG or JPEG of at most "
                               f"{MAX_TEXTURE_BYTES // (1024 * 1024)} MB", 422)
-    return view.texture, view.texture_type
+    return image, kind
 
 
 def convert_bytes(what: str, file: str, mesh: bytes, texture: Optional[bytes] = None,
@@ -144,9 +152,10 @@ def convert_bytes(what: str, file: str, mesh: bytes, texture: Optional[bytes] = 
         run_argtool(args, f"{what} took more than {TIMEOUT} s to prepare for the 3D view",
                     f"{what} cannot be shown in 3D")
         data = target.read_bytes()
-        # argtool writes the texture only when the JSON says it maps one, and of the type it says.
-        mapped = json.loads(data).get("texture")
-        view = View(data, image.read_bytes() if mapped else None, mapped["type"] if mapped else "")
+        # argtool writes image i at texture-i for each image the JSON lists, of the type it says.
+        listed = json.loads(data).get("images") or []
+        view = View(data, tuple((Path(f"{image}-{i}").read_bytes(), str(entry["type"]))
+                                for i, entry in enumerate(listed)))
     with _lock:
         _cache[key] = view
         while len(_cache) > KEEP:

@@ -95,14 +95,22 @@ function show(data) {
     });
   }
   const faces = data.faces, positions = data.positions, faceCount = faces.length / 3;
-  // With a texture, the faces that have coordinates are drawn first (the textured material's
-  // group), then the others: slot i of the geometry draws face order[i].
-  const mapped = Boolean(data.texture && data.uvs);
-  const bare = new Set(mapped ? data.untextured_faces : []);
+  // With textures, the faces of texture 0 are drawn first (material 0's group), then those of
+  // texture 1, and so on, then the faces without one: slot i of the geometry draws face order[i].
+  const mapped = Boolean(data.textures && data.textures.length && data.uvs && data.face_textures);
+  const textureOf = mapped ? data.face_textures : null;
   const order = [];
-  for (let f = 0; f < faceCount; ++f) if (!bare.has(f)) order.push(f);
-  const texturedCount = mapped ? order.length : 0;
-  for (const f of bare) order.push(f);
+  const groups = [];
+  if (mapped) {
+    const buckets = data.textures.map(() => []), bare = [];
+    for (let f = 0; f < faceCount; ++f) (textureOf[f] >= 0 ? buckets[textureOf[f]] : bare).push(f);
+    buckets.concat([bare]).forEach((bucket, m) => {
+      groups.push([order.length, bucket.length, m]);
+      for (const f of bucket) order.push(f);
+    });
+  } else {
+    for (let f = 0; f < faceCount; ++f) order.push(f);
+  }
   const position = new Float32Array(faceCount * 9);
   let radius = 0;
   for (let i = 0; i < faceCount; ++i) {
@@ -118,18 +126,23 @@ function show(data) {
   const colour = new THREE.BufferAttribute(new Float32Array(faceCount * 9), 3);
   geometry.setAttribute("color", colour);
   const plain = new THREE.MeshLambertMaterial({ vertexColors: true, side: THREE.DoubleSide });
-  const textured = new THREE.MeshLambertMaterial({ vertexColors: true, side: THREE.DoubleSide });
-  let texture = null;  // once loaded; the textured faces show their colours until then
+  // One material per texture; each gets its map once its image has loaded (its faces show
+  // their colours until then).
+  const textured = mapped ? data.textures.map(() => new THREE.MeshLambertMaterial({
+    vertexColors: true, side: THREE.DoubleSide })) : [];
+  const maps = textured.map(() => null);
   if (mapped) {
     const uv = new Float32Array(faceCount * 6);
-    for (let i = 0; i < texturedCount; ++i) uv.set(data.uvs.slice(6 * order[i], 6 * order[i] + 6), 6 * i);
+    for (let i = 0; i < faceCount; ++i) {
+      const f = order[i];
+      if (textureOf[f] >= 0) uv.set(data.uvs.slice(6 * f, 6 * f + 6), 6 * i);
+    }
     geometry.setAttribute("uv", new THREE.BufferAttribute(uv, 2));
-    geometry.addGroup(0, 3 * texturedCount, 0);
-    geometry.addGroup(3 * texturedCount, 3 * (faceCount - texturedCount), 1);
+    for (const [start, count, m] of groups) geometry.addGroup(3 * start, 3 * count, m);
   }
   box.dataset.texture = mapped ? "loading" : "none";
   say(data.texture_note);
-  const surface = new THREE.Mesh(geometry, mapped ? [textured, plain] : plain);
+  const surface = new THREE.Mesh(geometry, mapped ? [...textured, plain] : plain);
 
   const scene = new THREE.Scene();
   scene.background = new THREE.Color(0xffffff);
@@ -156,24 +169,29 @@ function show(data) {
   box.dataset.picked = String(picked);
   const level = () => Number(levelChoice.value);
 
-  // The texture shows through white (a picked part tints it); mu and the nodes replace it.
-  const WHITE = [255, 255, 255];
+  // A texture shows through its factor (a glTF material's baseColorFactor; white for an OBJ),
+  // taken as the ARG takes it: multiplying the texture's 0..1 sRGB values, as the untextured
+  // faces' colours already carry their factor. A picked part tints it; mu and the nodes replace it.
+  const factors = mapped ? data.textures.map((t) => (t.factor || [1, 1, 1]).map((x) => 255 * x)) : [];
   function paint() {
     const mode = colourChoice.value, nodes = data.levels[level()].face_nodes, c = colour.array;
-    const showTexture = texture !== null && mode === "own";
-    if (textured.map !== (showTexture ? texture : null)) {
-      textured.map = showTexture ? texture : null;
-      textured.needsUpdate = true;
-    }
+    textured.forEach((material, m) => {
+      const map = mode === "own" ? maps[m] : null;
+      if (material.map !== map) {
+        material.map = map;
+        material.needsUpdate = true;
+      }
+    });
+    box.dataset.maps = String(textured.filter((material) => material.map).length);
     for (let i = 0; i < faceCount; ++i) {
-      const f = order[i];
+      const f = order[i], t = mapped ? textureOf[f] : -1;
       for (let k = 0; k < 3; ++k) {
         const v = faces[3 * f + k];
         let rgb;
         if (picked >= 0 && nodes[f] === picked) rgb = PICKED;
         else if (mode === "mu") rgb = muColour(data.mu[v]);
         else if (mode === "nodes") rgb = nodes[f] >= 0 ? nodeColour(nodes[f]) : CLAY;
-        else if (showTexture && i < texturedCount) rgb = WHITE;
+        else if (t >= 0 && maps[t]) rgb = factors[t];
         else rgb = data.face_colours ? data.face_colours.slice(3 * f, 3 * f + 3) : CLAY;
         c.set(linear(rgb), 9 * i + 3 * k);
       }
@@ -243,18 +261,30 @@ function show(data) {
   update();
   box.dataset.state = "ready";
   if (mapped) {
-    // The texture route serves what view.json describes: beside it, as .../texture.
-    new THREE.TextureLoader().load(box.dataset.src.replace(/view\.json$/, "texture"), (loaded) => {
-      loaded.colorSpace = THREE.SRGBColorSpace;
-      loaded.wrapS = WRAPS[data.texture.wrap_s] || THREE.RepeatWrapping;
-      loaded.wrapT = WRAPS[data.texture.wrap_t] || THREE.RepeatWrapping;
-      loaded.anisotropy = renderer.capabilities.getMaxAnisotropy();
-      texture = loaded;
-      box.dataset.texture = "mapped";
-      update();
-    }, undefined, () => {
-      box.dataset.texture = "failed";
-      say("The texture could not be loaded: the surface shows the colours taken from it.");
+    // The texture route serves the images view.json describes: beside it, as .../texture/I.
+    // Each image is loaded once; a texture that wraps it otherwise shares it through a clone.
+    let left = data.images.length, failed = false;
+    data.images.forEach((_, i) => {
+      new THREE.TextureLoader().load(box.dataset.src.replace(/view\.json$/, `texture/${i}`), (loaded) => {
+        loaded.colorSpace = THREE.SRGBColorSpace;
+        loaded.anisotropy = renderer.capabilities.getMaxAnisotropy();
+        let first = true;
+        data.textures.forEach((t, m) => {
+          if (t.image !== i) return;
+          const map = first ? loaded : loaded.clone();
+          first = false;
+          map.wrapS = WRAPS[t.wrap_s] || THREE.RepeatWrapping;
+          map.wrapT = WRAPS[t.wrap_t] || THREE.RepeatWrapping;
+          map.needsUpdate = true;
+          maps[m] = map;
+        });
+        if (--left === 0) box.dataset.texture = failed ? "failed" : "mapped";
+        update();
+      }, undefined, () => {
+        failed = true;
+        if (--left === 0) box.dataset.texture = "failed";
+        say("A texture could not be loaded: its faces show the colours taken from it.");
+      });
     });
   }
 }
