@@ -134,46 +134,54 @@ void prepare_buckets(const SurfaceGraph& g, BucketScratch& s) {
   s.empty = true;
 }
 
-void shortest_paths_quantised(const SurfaceGraph& g, int source, std::vector<float>& distance,
-                              BucketScratch& s, const StopRequested& stop) {
+void shortest_steps(const SurfaceGraph& g, int source, BucketScratch& s,
+                    const StopRequested& stop) {
   const std::size_t n = std::size_t(g.nodes());
-  const std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
-  s.dist.assign(n, none);
+  s.dist.assign(n, kUnreached);
   // A run that ends normally leaves every bucket empty; one stopped by a cancel does not.
   if (!s.empty)
     for (auto& b : s.buckets) b.clear();
   s.empty = false;
+  // Locals, not members: the stores into dist[] below could alias the scratch's fields, so the
+  // compiler would otherwise reload the mask and the buckets' address at every relaxation.
   std::uint32_t* const dist = s.dist.data();
   const std::uint64_t* const arc = s.arc.data();
   const int* const offset = g.offset.data();
+  std::vector<int>* const buckets = s.buckets.data();
+  const std::uint64_t mask = s.mask;
   dist[source] = 0;
-  s.buckets[0].push_back(source);
+  buckets[0].push_back(source);
   std::size_t pending = 1, pops = 0;
   for (std::uint64_t current = 0; pending > 0; ++current) {
-    std::vector<int>& bucket = s.buckets[current & s.mask];
+    std::vector<int>& bucket = buckets[current & mask];
     while (!bucket.empty()) {
       const int v = bucket.back();
       bucket.pop_back();
       --pending;
       if (dist[v] != current) continue;  // a stale entry
       if ((++pops & 8191) == 0) check_interrupt(stop);
-      for (int k = offset[v]; k < offset[v + 1]; ++k) {
+      const int end = offset[v + 1];
+      for (int k = offset[v]; k < end; ++k) {
         const std::uint64_t a = arc[k];
         const auto w = std::uint32_t(a);
         const std::uint64_t nd = current + (a >> 32);
         if (nd < dist[w]) {
           dist[w] = std::uint32_t(nd);
-          s.buckets[nd & s.mask].push_back(int(w));
+          buckets[nd & mask].push_back(int(w));
           ++pending;
         }
       }
     }
   }
   s.empty = true;
+}
+
+void shortest_paths_quantised(const SurfaceGraph& g, int source, std::vector<float>& distance,
+                              BucketScratch& s, const StopRequested& stop) {
+  shortest_steps(g, source, s, stop);
+  const std::size_t n = s.dist.size();
   distance.resize(n);
-  for (std::size_t v = 0; v < n; ++v)
-    distance[v] =
-        dist[v] == none ? std::numeric_limits<float>::infinity() : float(dist[v] * s.unit);
+  for (std::size_t v = 0; v < n; ++v) distance[v] = s.distance(v);
 }
 
 }  // namespace arg

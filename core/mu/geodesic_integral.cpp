@@ -78,20 +78,21 @@ std::vector<double> geodesic_integral(const Mesh& mesh, const MeshEdges& edges, 
   // Blocks of base points run in parallel; their distances are added in base-point order, so
   // the sum (and so the ARG bytes) does not depend on the number of threads.
   const int block = workers;
-  std::vector<std::vector<float>> buffers(static_cast<std::size_t>(block));
   std::vector<BucketScratch> scratch(static_cast<std::size_t>(block));
   for (auto& s : scratch) prepare_buckets(graph, s);
   for (std::size_t start = 0; start < base.size(); start += std::size_t(block)) {
     const int here = int(std::min<std::size_t>(std::size_t(block), base.size() - start));
-    parallel_for(std::size_t(here), workers, [&](std::size_t k) {
-      shortest_paths_quantised(graph, base[start + k], buffers[k], scratch[k], stop);
-    });
+    parallel_for(std::size_t(here), workers,
+                 [&](std::size_t k) { shortest_steps(graph, base[start + k], scratch[k], stop); });
     check_interrupt(stop);
+    // Each distance rounded to a float as shortest_paths_quantised gives it, so mu's bytes are
+    // those of the float distances it was first written with.
     for (int k = 0; k < here; ++k) {
       const double s = weight[start + std::size_t(k)];
-      const std::vector<float>& d = buffers[k];
+      const BucketScratch& run = scratch[std::size_t(k)];
       for (int v = 0; v < nv; ++v)
-        if (std::isfinite(d[v])) mu[v] += s * double(d[v]);
+        if (run.dist[std::size_t(v)] != kUnreached)
+          mu[v] += s * double(run.distance(std::size_t(v)));
     }
   }
   return mu;

@@ -185,6 +185,51 @@ TEST(GeodesicIntegral, ARunStoppedMidwayLeavesTheScratchReadyForTheNext) {
   }
 }
 
+TEST(GeodesicIntegral, WholeStepsGiveTheQuantisedDistancesExactly) {
+  // mu reads shortest_steps' units through BucketScratch::distance; its bytes depend on that
+  // being exactly what shortest_paths_quantised writes, unreached nodes included.
+  Mesh two = test::icosphere(2);
+  const Mesh other = test::icosphere(1);
+  const Eigen::Index offset = two.V.rows();
+  two.V.conservativeResize(offset + other.V.rows(), 3);
+  two.V.bottomRows(other.V.rows()) = other.V.rowwise() + Eigen::RowVector3d(5, 0, 0);
+  two.F.conservativeResize(two.F.rows() + other.F.rows(), 3);
+  two.F.bottomRows(other.F.rows()) = other.F.array() + int(offset);
+  SurfaceGraph g = surface_graph(two, mesh_edges(two.F), integral_max_edge(two));
+  // Keep the two spheres apart: drop the links surface_graph adds between components.
+  SurfaceGraph apart;
+  apart.mesh_vertices = g.mesh_vertices;
+  apart.offset.assign(g.offset.size(), 0);
+  const auto side = [&](int node) { return node >= offset; };
+  for (int v = 0; v < g.nodes(); ++v) {
+    for (int k = g.offset[std::size_t(v)]; k < g.offset[std::size_t(v) + 1]; ++k) {
+      const int w = g.target[std::size_t(k)];
+      const bool keep = v >= g.mesh_vertices || w >= g.mesh_vertices || side(v) == side(w);
+      if (!keep) continue;
+      apart.target.push_back(w);
+      apart.length.push_back(g.length[std::size_t(k)]);
+    }
+    apart.offset[std::size_t(v) + 1] = int(apart.target.size());
+  }
+  BucketScratch steps, floats;
+  prepare_buckets(apart, steps);
+  prepare_buckets(apart, floats);
+  std::vector<float> expected;
+  int unreached = 0;
+  for (int source : {0, 3, int(offset) + 2}) {
+    shortest_steps(apart, source, steps);
+    shortest_paths_quantised(apart, source, expected, floats);
+    ASSERT_EQ(steps.dist.size(), expected.size());
+    for (std::size_t v = 0; v < expected.size(); ++v) {
+      const float got = steps.distance(v);
+      EXPECT_TRUE(got == expected[v] || (std::isinf(got) && std::isinf(expected[v]))) << v;
+      EXPECT_EQ(steps.dist[v] == kUnreached, std::isinf(expected[v])) << v;
+      unreached += steps.dist[v] == kUnreached;
+    }
+  }
+  EXPECT_GT(unreached, 0);  // the other sphere, from each source
+}
+
 TEST(GeodesicIntegral, OnASphereTheIntegralIsTheSameAtEveryVertex) {
   // Exact: the integral of the arc length from any point over the unit sphere is 2 pi^2. With
   // 2 splits the integral's refinement adds a point per edge: spread 1.69%, mean 0.83% low.
