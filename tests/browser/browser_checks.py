@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import io
 import json
 import re
@@ -14,7 +15,7 @@ import urllib.request
 import uuid
 import zipfile
 from pathlib import Path
-from typing import Any, Dict, List, Optional, Tuple
+from typing import Any, Dict, Iterator, List, Optional, Tuple
 
 import psycopg
 from PIL import Image, ImageStat
@@ -546,31 +547,38 @@ class Browser:
                f"({self.d.find_element(By.ID, 'view-note').text!r})")
         return box.find_element(By.TAG_NAME, "canvas")
 
+    @contextlib.contextmanager
+    def object_for_one_check(self, object_id: int, model_id: str, title: str, file: str,
+                             mesh: bytes) -> Iterator[None]:
+        """A catalogue object put in for one check only (the others count the sample's models and
+        classes), its page open on the 3D view; taken out again whatever the check found."""
+        with psycopg.connect(autocommit=True) as conn:
+            conn.execute("INSERT INTO objects (id, model_id, title, class, file, mesh) "
+                         "VALUES (%s, %s, %s, 'globe', %s, %s)", (object_id, model_id, title, file, mesh))
+            try:
+                self.open(f"object/{object_id}", "#view3d")
+                yield
+            finally:
+                conn.execute("DELETE FROM objects WHERE id = %s", (object_id,))
+
     def view_maps_a_texture(self) -> None:
         glb = textured_glb.globe_glb()
-        with psycopg.connect(autocommit=True) as conn:
-            # Put in for this check only: the others count the sample's models and classes.
-            conn.execute("INSERT INTO objects (id, model_id, title, class, file, mesh) "
-                         "VALUES (999997, 'textured-globe', 'Textured globe', 'globe', 'globe.glb', %s)", (glb,))
-            try:
-                self.open("object/999997", "#view3d")
-                canvas = self.texture_mapped("a textured GLB")
-                shot = self.picture(canvas)
-                magenta, green = self.checker_pixels(shot)
-                expect(magenta > 500 and green > 500,
-                       f"the checkerboard's colours in the 3D view: {magenta} magenta, {green} green pixels")
-                Select(self.d.find_element(By.ID, "view-colour")).select_by_value("mu")
-                mu = self.redraw(canvas, shot, "after colouring the textured object by mu")
-                expect(self.checker_pixels(mu)[0] < 50, "mu colouring still shows the texture's magenta")
-                ActionChains(self.d).move_to_element(canvas).click().perform()
-                picked = int(self.d.find_element(By.ID, "view3d").get_attribute("data-picked"))
-                expect(picked >= 0, "a click on the textured surface picked no node")
-                with urllib.request.urlopen(self.url + "object/999997/texture/0", timeout=WAIT) as answer:
-                    kind, image = answer.headers.get("Content-Type", ""), answer.read()
-                expect(kind == "image/png" and image == textured_glb.checker_png(),
-                       f"the texture route sends {kind} of {len(image)} bytes, not the GLB's PNG")
-            finally:
-                conn.execute("DELETE FROM objects WHERE id = 999997")
+        with self.object_for_one_check(999997, "textured-globe", "Textured globe", "globe.glb", glb):
+            canvas = self.texture_mapped("a textured GLB")
+            shot = self.picture(canvas)
+            magenta, green = self.checker_pixels(shot)
+            expect(magenta > 500 and green > 500,
+                   f"the checkerboard's colours in the 3D view: {magenta} magenta, {green} green pixels")
+            Select(self.d.find_element(By.ID, "view-colour")).select_by_value("mu")
+            mu = self.redraw(canvas, shot, "after colouring the textured object by mu")
+            expect(self.checker_pixels(mu)[0] < 50, "mu colouring still shows the texture's magenta")
+            ActionChains(self.d).move_to_element(canvas).click().perform()
+            picked = int(self.d.find_element(By.ID, "view3d").get_attribute("data-picked"))
+            expect(picked >= 0, "a click on the textured surface picked no node")
+            with urllib.request.urlopen(self.url + "object/999997/texture/0", timeout=WAIT) as answer:
+                kind, image = answer.headers.get("Content-Type", ""), answer.read()
+            expect(kind == "image/png" and image == textured_glb.checker_png(),
+                   f"the texture route sends {kind} of {len(image)} bytes, not the GLB's PNG")
         with tempfile.TemporaryDirectory() as scratch:
             path = Path(scratch) / "globe.glb"
             path.write_bytes(glb)
@@ -586,32 +594,26 @@ class Browser:
 
     def view_maps_each_primitives_texture(self) -> None:
         glb = textured_glb.two_textures_glb()
-        with psycopg.connect(autocommit=True) as conn:
-            conn.execute("INSERT INTO objects (id, model_id, title, class, file, mesh) "
-                         "VALUES (999996, 'two-textures', 'Two textures', 'globe', 'two.glb', %s)", (glb,))
-            try:
-                self.open("object/999996", "#view3d")
-                shot = self.picture(self.texture_mapped("a GLB of two textures"))
-                magenta, green = self.checker_pixels(shot)
-                blue = self.blue_pixels(shot)
-                # The colours baked from a texture look like it too: the view says how many of its
-                # materials draw their texture.
-                maps = self.d.find_element(By.ID, "view3d").get_attribute("data-maps")
-                expect(maps == "2" and magenta > 300 and green > 300 and blue > 300,
-                       f"each primitive's texture, the south's times its factor: {maps} textures drawn, "
-                       f"{magenta} magenta, {green} green, {blue} blue pixels")
-                view = json.loads(urllib.request.urlopen(self.url + "object/999996/view.json", timeout=WAIT).read())
-                factors = [t["factor"] for t in view["textures"]]
-                expect(len(view["images"]) == 2 and factors == [[1, 1, 1], [0.1, 0.2, 1]],
-                       f"view.json lists {len(view['images'])} images, factors {factors}")
-                with urllib.request.urlopen(self.url + "object/999996/texture/1", timeout=WAIT) as answer:
-                    second = answer.read()
-                expect(second == textured_glb.south_png(),
-                       f"texture/1 sends {len(second)} bytes, not the GLB's second PNG")
-                status, _, page = self.http("GET", "object/999996/texture/2")
-                expect(status == 404 and "no texture image 2" in page, f"texture/2: HTTP {status}: {page[:200]!r}")
-            finally:
-                conn.execute("DELETE FROM objects WHERE id = 999996")
+        with self.object_for_one_check(999996, "two-textures", "Two textures", "two.glb", glb):
+            shot = self.picture(self.texture_mapped("a GLB of two textures"))
+            magenta, green = self.checker_pixels(shot)
+            blue = self.blue_pixels(shot)
+            # The colours baked from a texture look like it too: the view says how many of its
+            # materials draw their texture.
+            maps = self.d.find_element(By.ID, "view3d").get_attribute("data-maps")
+            expect(maps == "2" and magenta > 300 and green > 300 and blue > 300,
+                   f"each primitive's texture, the south's times its factor: {maps} textures drawn, "
+                   f"{magenta} magenta, {green} green, {blue} blue pixels")
+            view = json.loads(urllib.request.urlopen(self.url + "object/999996/view.json", timeout=WAIT).read())
+            factors = [t["factor"] for t in view["textures"]]
+            expect(len(view["images"]) == 2 and factors == [[1, 1, 1], [0.1, 0.2, 1]],
+                   f"view.json lists {len(view['images'])} images, factors {factors}")
+            with urllib.request.urlopen(self.url + "object/999996/texture/1", timeout=WAIT) as answer:
+                second = answer.read()
+            expect(second == textured_glb.south_png(),
+                   f"texture/1 sends {len(second)} bytes, not the GLB's second PNG")
+            status, _, page = self.http("GET", "object/999996/texture/2")
+            expect(status == 404 and "no texture image 2" in page, f"texture/2: HTTP {status}: {page[:200]!r}")
 
     def upload_obj_with_mtl_and_texture(self) -> None:
         obj, mtl = textured_glb.globe_obj()

@@ -15,19 +15,11 @@ GREEN = (0, 190, 0)
 
 def checker_png(width: int = 64, height: int = 32, square: int = 8) -> bytes:
     """An RGB PNG of square x square cells, MAGENTA and GREEN alternating."""
-    rows = b"".join(
-        b"\0" + b"".join(bytes(MAGENTA if (x // square + y // square) % 2 else GREEN) for x in range(width))
-        for y in range(height))
-
-    def chunk(kind: bytes, data: bytes) -> bytes:
-        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
-
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0))
-            + chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
+    return plain_checker_png(MAGENTA, GREEN, width, height, square)
 
 
 def plain_checker_png(light: tuple, dark: tuple, width: int = 16, height: int = 16, square: int = 4) -> bytes:
-    """checker_png's cells in two other colours."""
+    """An RGB PNG of square x square cells, LIGHT and DARK alternating (DARK first)."""
     rows = b"".join(
         b"\0" + b"".join(bytes(light if (x // square + y // square) % 2 else dark) for x in range(width))
         for y in range(height))
