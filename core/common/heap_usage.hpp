@@ -1,6 +1,7 @@
 // The heap the process has allocated, and a stop hook that bounds its growth during a build.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 
 #include "common/limits.hpp"
@@ -18,9 +19,15 @@ std::size_t heap_bytes_in_use();
 
 // A hook that asks `stop` first, then compares the heap in use with its level when the hook was
 // made: more than `max_bytes` above it throws MemoryLimitError ("... allocated, more than the build
-// memory cap of ..."). Polled where `stop` is (poll_interrupt), so a build overshoots the cap by
-// at most what it allocates between two polls. max_bytes 0, or no tracking, returns `stop`.
+// memory cap of ..."). Polled where `stop` is (poll_interrupt), but a reading of the heap is
+// taken only once heap_check_wait(the last reading's cost) has passed since it, so a build
+// overshoots the cap by at most what it allocates between two readings. max_bytes 0, or no
+// tracking, returns `stop`.
 StopRequested bounded_by_heap(StopRequested stop, std::size_t max_bytes);
+
+// How long the hook waits after a reading of the heap that took `cost`: 20 times as long, so that
+// at most a 21st of a build goes to measuring its heap, and never more than 50 ms.
+std::chrono::nanoseconds heap_check_wait(std::chrono::nanoseconds cost);
 
 // Whole megabytes (rounded up) of `bytes`, for messages.
 std::size_t megabytes(std::size_t bytes);

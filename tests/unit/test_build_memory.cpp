@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <memory>
 
@@ -144,6 +145,29 @@ TEST(BuildMemory, TheHookStopsOnceTheHeapGrowsPastTheCap) {
   EXPECT_TRUE(bounded_by_heap([] { return true; }, 32 * kMB)());
   // No cap: the hook is the inner one.
   EXPECT_FALSE(bounded_by_heap({}, 0));
+}
+
+TEST(BuildMemory, AReadingOfTheHeapWaitsTwentyTimesWhatItCost) {
+  using std::chrono::microseconds;
+  using std::chrono::milliseconds;
+  EXPECT_EQ(heap_check_wait(microseconds(3)), microseconds(60));
+  EXPECT_EQ(heap_check_wait(milliseconds(2)), milliseconds(40));
+  EXPECT_EQ(heap_check_wait(milliseconds(10)), milliseconds(50));  // at most 50 ms
+  EXPECT_EQ(heap_check_wait(std::chrono::nanoseconds(0)), std::chrono::nanoseconds(0));
+}
+
+TEST(BuildMemory, TheHookReadsTheHeapOnlyAfterItsWait) {
+  if (!heap_tracking_available()) GTEST_SKIP() << "no heap tracking in this build";
+  const StopRequested hook = bounded_by_heap({}, 32 * kMB);
+  // Readings follow one another closely here: most polls fall inside a wait and read nothing,
+  // so a million polls cost far less than a million readings would.
+  const auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < 1000000; ++i) ASSERT_FALSE(hook());
+  const auto polls = std::chrono::steady_clock::now() - start;
+  const auto reading_start = std::chrono::steady_clock::now();
+  for (int i = 0; i < 1000; ++i) (void)heap_bytes_in_use();
+  const auto per_reading = (std::chrono::steady_clock::now() - reading_start) / 1000;
+  EXPECT_LT(polls, 1000000 * per_reading / 4);
 }
 
 TEST(BuildMemory, ABuildWhoseHeapPassesTheCapIsStopped) {
