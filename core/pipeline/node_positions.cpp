@@ -19,7 +19,9 @@ NodePositions node_positions(const Mesh& input, const BuildOptions& options,
                      std::to_string(kMaxLevels) + "]");
   NodePositions out;
   PreparedSurface prepared = prepare_surface(input, options, stop);
-  out.mesh = prepared.proxy ? std::move(*prepared.proxy) : std::move(prepared.posed);
+  out.mesh = prepared.proxy    ? std::move(*prepared.proxy)
+             : prepared.coarse ? std::move(*prepared.coarse)
+                               : std::move(prepared.posed);
   out.pose = prepared.pose;
   const MeshEdges edges = mesh_edges(out.mesh.F);
   out.mu = normalised_mu(out.mesh, edges, options, stop);
