@@ -127,9 +127,10 @@ signal_masks() {
 # each read once: sets workers (how many were seen) and workers_blocking (how many of them
 # blocked SIGINT). mu's workers live for one Dijkstra each, a few milliseconds, so the loop
 # reads /proc with the shell's own read and never forks; it polls until one is seen or the
-# statement has run 20 s.
+# statement has run 20 s. A thread read as it exits shows an empty SigBlk (its signal state is
+# gone by then), so a mask without SIGINT counts only if the thread is still there, not dead.
 watch_workers() {
-  local task name key value tid
+  local task name key value tid mask state
   declare -A seen=()
   workers=0 workers_blocking=0
   while [[ $workers -lt 1 && $(($(now_ms) - started)) -lt 20000 ]]; do
@@ -139,14 +140,21 @@ watch_workers() {
       name=""
       { read -r name < "$task/comm"; } 2>/dev/null
       [[ $name == "arg worker" ]] || continue
+      mask=""
       while read -r key value; do
-        if [[ $key == SigBlk: ]]; then
-          seen[$tid]=1
-          workers=$((workers + 1))
-          workers_blocking=$((workers_blocking + ((0x$value >> 1) & 1)))
-          break
-        fi
+        [[ $key == SigBlk: ]] && { mask=$value; break; }
       done 2>/dev/null < "$task/status"
+      [[ -n $mask ]] || continue
+      if (( ((0x$mask >> 1) & 1) == 0 )); then  # only a thread still alive after it counts
+        state=""
+        while read -r key value; do
+          [[ $key == State: ]] && { state=$value; break; }
+        done 2>/dev/null < "$task/status"
+        [[ -n $state && $state != [XZ]* ]] || continue
+      fi
+      seen[$tid]=1
+      workers=$((workers + 1))
+      workers_blocking=$((workers_blocking + ((0x$mask >> 1) & 1)))
     done
   done
 }
