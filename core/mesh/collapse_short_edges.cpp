@@ -20,6 +20,7 @@ struct Work {
   std::vector<std::array<int, 3>> F;
   std::vector<bool> face_alive, vertex_alive;
   std::vector<std::vector<int>> faces_of;  // live faces around each vertex
+  std::vector<int> merged_into;            // the vertex a collapse moved each one into, or itself
 };
 
 bool has(const std::array<int, 3>& f, int v) {
@@ -132,6 +133,7 @@ bool try_collapse(Work& w, int a, int b, const CollapseOptions& options, double 
   std::sort(w.faces_of[a].begin(), w.faces_of[a].end());
   w.faces_of[b].clear();
   w.vertex_alive[b] = false;
+  w.merged_into[b] = a;
   w.V[a] = mid;
   return true;
 }
@@ -139,7 +141,7 @@ bool try_collapse(Work& w, int a, int b, const CollapseOptions& options, double 
 }  // namespace
 
 Mesh collapse_short_edges(const Mesh& mesh, const CollapseOptions& options,
-                          const StopRequested& stop) {
+                          const StopRequested& stop, std::vector<int>* vertex_map) {
   Work w;
   const auto nv = static_cast<std::size_t>(mesh.V.rows());
   const auto nf = static_cast<std::size_t>(mesh.F.rows());
@@ -160,6 +162,8 @@ Mesh collapse_short_edges(const Mesh& mesh, const CollapseOptions& options,
   }
   w.face_alive.assign(nf, true);
   w.vertex_alive.assign(nv, true);
+  w.merged_into.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v) w.merged_into[v] = static_cast<int>(v);
 
   const double reach = std::max(options.min_length, options.flat_length);
   const double reach2 = reach * reach;
@@ -196,6 +200,21 @@ Mesh collapse_short_edges(const Mesh& mesh, const CollapseOptions& options,
     poll_interrupt(v, stop);
     if (w.vertex_alive[v] && !w.faces_of[v].empty()) new_index[v] = next++;
   }
+  if (vertex_map) {
+    // A merged vertex's target may itself have merged later: follow the chain to a survivor.
+    vertex_map->assign(nv, -1);
+    for (std::size_t v = 0; v < nv; ++v) {
+      poll_interrupt(v, stop);
+      int root = static_cast<int>(v);
+      while (w.merged_into[std::size_t(root)] != root) root = w.merged_into[std::size_t(root)];
+      for (int u = static_cast<int>(v); u != root;) {  // path compression: linear overall
+        const int up = w.merged_into[std::size_t(u)];
+        w.merged_into[std::size_t(u)] = root;
+        u = up;
+      }
+      (*vertex_map)[v] = new_index[std::size_t(root)];
+    }
+  }
   Mesh out;
   out.V.resize(next, 3);
   for (std::size_t v = 0; v < nv; ++v) {
@@ -207,11 +226,13 @@ Mesh collapse_short_edges(const Mesh& mesh, const CollapseOptions& options,
   const auto live =
       static_cast<Eigen::Index>(std::count(w.face_alive.begin(), w.face_alive.end(), true));
   out.F.resize(live, 3);
+  if (mesh.has_colour()) out.C.resize(live, 3);
   Eigen::Index row = 0;
   for (std::size_t f = 0; f < nf; ++f) {
     poll_interrupt(f, stop);
     if (!w.face_alive[f]) continue;
     for (int k = 0; k < 3; ++k) out.F(row, k) = new_index[w.F[f][k]];
+    if (mesh.has_colour()) out.C.row(row) = mesh.C.row(static_cast<Eigen::Index>(f));
     ++row;
   }
   // Freed list by list, polling: a million small lists take a few hundred milliseconds to free.

@@ -1,6 +1,8 @@
 // Collapsing short edges, topology kept: slivers of marching, coarser copies for the spectrum.
 #pragma once
 
+#include <vector>
+
 #include "common/limits.hpp"
 #include "mesh/mesh.hpp"
 
@@ -16,8 +18,11 @@ struct CollapseOptions {
 // into their midpoints. An edge is only collapsed when the link condition holds, which keeps a
 // closed manifold closed, manifold and of the same genus, and when no surrounding triangle
 // would flip, turn by more than 60 degrees or lose its area. Only edges between two triangles
-// collapse, so a boundary stays where it is; colours are not carried (call before painting).
+// collapse, so a boundary stays where it is. A triangle that survives keeps its colour (a
+// collapse moves its corners, never makes a new triangle).
+// `vertex_map`, when given, receives for each input vertex the output vertex it was collapsed
+// into (itself renumbered if it survived), or -1 for a vertex on no triangle.
 Mesh collapse_short_edges(const Mesh& mesh, const CollapseOptions& options,
-                          const StopRequested& stop = {});
+                          const StopRequested& stop = {}, std::vector<int>* vertex_map = nullptr);
 
 }  // namespace arg

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "common/errors.hpp"
 #include "common/heap_usage.hpp"
@@ -13,6 +14,7 @@
 #include "features/shape_distributions.hpp"
 #include "graph/serialize.hpp"
 #include "mesh/mesh_edges.hpp"
+#include "mesh/restrict_face_values.hpp"
 #include "mesh/taubin_smoothing.hpp"
 #include "mu/mu_function.hpp"
 #include "pipeline/build_memory.hpp"
@@ -30,16 +32,36 @@ namespace {
 // leave them .03 below, and the clean scores move by less than .005 (docs/BENCHMARKS.md).
 constexpr int kSmoothing = 80;
 
-// A copy smoothed against noise of the size of an edge, for a mesh whose edges are short
+// Whether a mesh calls for smoothing against noise of the size of an edge: its edges are short
 // (mean under 2% of its bounding box's diagonal: scans and fine meshes). A coarse mesh's edges
 // are its shape, and smoothing would round a 12-triangle box into a blob, so it stays as it is.
-Mesh smoothed(const Mesh& mesh, const MeshEdges& edges, const StopRequested& stop) {
+bool needs_smoothing(const Mesh& mesh, const MeshEdges& edges) {
   double sum = 0;
   for (int e = 0; e < edges.count(); ++e)
     sum += (mesh.V.row(edges.v0[e]) - mesh.V.row(edges.v1[e])).norm();
   const double diagonal = (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).norm();
-  if (!(edges.count() > 0) || sum / edges.count() >= 0.02 * diagonal) return mesh;
-  return taubin_smoothing(mesh, edges, kSmoothing, 0.5, -0.53, stop);
+  return edges.count() > 0 && sum / edges.count() < 0.02 * diagonal;
+}
+
+Mesh smoothed(const Mesh& mesh, const MeshEdges& edges, int iterations, const StopRequested& stop) {
+  return taubin_smoothing(mesh, edges, iterations, 0.5, -0.53, stop);
+}
+
+// The curvature of the fine surface carried to its collapsed copy's triangles: a coarser
+// surface's dihedral angles and angle defects spread differently over its fewer triangles, and
+// the curvature histograms built from them lost half of shrec07's first tier the copy cost.
+TriangleCurvature fine_curvature(const PreparedSurface& prepared, const StopRequested& stop) {
+  const Mesh& fine = prepared.posed;
+  const Mesh smooth = needs_smoothing(fine, prepared.posed_edges)
+                          ? smoothed(fine, prepared.posed_edges, kSmoothing, stop)
+                          : fine;
+  const TriangleCurvature on_fine = triangle_curvature(smooth, prepared.posed_edges, stop);
+  TriangleCurvature out;
+  out.mean =
+      restrict_face_values(smooth, *prepared.coarse, prepared.coarse_vertex, on_fine.mean, stop);
+  out.gaussian = restrict_face_values(smooth, *prepared.coarse, prepared.coarse_vertex,
+                                      on_fine.gaussian, stop);
+  return out;
 }
 
 class Stopwatch {
@@ -105,7 +127,9 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
   rep.ms.clean = clock.lap();
   const Mesh& mesh = prepared.surface();
   const MeshEdges proxy_edges = prepared.proxy ? mesh_edges(mesh.F, stop) : MeshEdges{};
-  const MeshEdges& edges = prepared.proxy ? proxy_edges : prepared.posed_edges;
+  const MeshEdges& edges = prepared.proxy    ? proxy_edges
+                           : prepared.coarse ? prepared.coarse_edges
+                                             : prepared.posed_edges;
   rep.ms.normalise = clock.lap();
 
   const std::vector<double> mu = normalised_mu(mesh, edges, options, stop);
@@ -119,11 +143,20 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
   // normals measure noise of the size of an edge as readily as shape, and a scan's noise would
   // otherwise fill the curvature histograms and speckle the views. A proxy is a level set
   // already smooth at its voxel size (and a soup's views see its parts as they are).
+  // On a collapsed copy the views' smoothing takes as many fewer steps as the copy has fewer
+  // triangles: a step diffuses over an edge, so the smoothing keeps its reach on the surface.
   Stopwatch part;
-  const Mesh smooth = prepared.proxy ? Mesh{} : smoothed(mesh, edges, stop);
+  Mesh smooth;
+  if (!prepared.proxy && needs_smoothing(prepared.posed, prepared.posed_edges)) {
+    const double share = double(mesh.F.rows()) / double(prepared.posed.F.rows());
+    smooth = smoothed(mesh, edges, std::max(1, int(std::lround(kSmoothing * share))), stop);
+  } else if (!prepared.proxy) {
+    smooth = mesh;
+  }
   rep.ms.smoothing = part.lap();
   const TriangleCurvature curvature =
-      triangle_curvature(prepared.proxy ? mesh : smooth, edges, stop);
+      prepared.coarse ? fine_curvature(prepared, stop)
+                      : triangle_curvature(prepared.proxy ? mesh : smooth, edges, stop);
   rep.ms.curvature = part.lap();
   double volume = 0;
   std::vector<std::vector<ArgNode>> per_level =

@@ -2,6 +2,8 @@
 #include "pipeline/node_positions.hpp"
 
 #include <algorithm>
+#include <array>
+#include <map>
 
 #include "common/errors.hpp"
 #include "mesh/mesh_edges.hpp"
@@ -12,6 +14,90 @@
 
 namespace arg {
 
+namespace {
+
+// The fine surface in place of its collapsed copy (PreparedSurface::coarse): each fine vertex
+// takes the mu of the copy's vertex it was collapsed into, and each fine triangle the pieces of
+// the copy's triangle with the same corners after the collapse; a triangle the collapse removed
+// takes those of a copy's triangle around its corners' images whose intervals hold its centre's
+// mu. node_at then answers for the fine surface what it answers for the copy, and a picture
+// shows the surface as read, with its texture coordinates on the triangles they were given on.
+void show_fine_surface(NodePositions& out, Mesh fine, const std::vector<int>& coarse_vertex,
+                       int intervals, const StopRequested& stop) {
+  const Mesh& coarse = out.mesh;
+  const auto corner_count = std::size_t(coarse.V.rows());
+  std::map<std::array<int, 3>, int> face_of_corners;
+  std::vector<int> around_begin(corner_count + 1, 0), around;
+  for (Eigen::Index g = 0; g < coarse.F.rows(); ++g)
+    for (int k = 0; k < 3; ++k) ++around_begin[std::size_t(coarse.F(g, k)) + 1];
+  for (std::size_t v = 0; v < corner_count; ++v) around_begin[v + 1] += around_begin[v];
+  around.resize(std::size_t(around_begin.back()));
+  std::vector<int> fill(around_begin.begin(), around_begin.end() - 1);
+  for (Eigen::Index g = 0; g < coarse.F.rows(); ++g) {
+    poll_interrupt(std::size_t(g), stop);
+    std::array<int, 3> corners = {coarse.F(g, 0), coarse.F(g, 1), coarse.F(g, 2)};
+    for (int c : corners) around[std::size_t(fill[std::size_t(c)]++)] = int(g);
+    std::sort(corners.begin(), corners.end());
+    face_of_corners.emplace(corners, int(g));
+  }
+  std::vector<double> mu(std::size_t(fine.V.rows()), 0.0);
+  for (Eigen::Index v = 0; v < fine.V.rows(); ++v) {
+    const int to = coarse_vertex[std::size_t(v)];
+    if (to >= 0) mu[std::size_t(v)] = out.mu[std::size_t(to)];
+  }
+  // A copy's triangle around `corner` whose pieces cover `interval` (-1 when none does).
+  auto holding = [&](int corner, int interval) {
+    const int b = around_begin[std::size_t(corner)], e = around_begin[std::size_t(corner) + 1];
+    for (int i = b; i < e; ++i) {
+      const auto g = std::size_t(around[std::size_t(i)]);
+      const int first = out.face_first_interval[g];
+      if (interval >= first &&
+          interval < first + out.face_piece_begin[g + 1] - out.face_piece_begin[g])
+        return int(g);
+    }
+    return -1;
+  };
+  std::vector<int> first_interval, piece_begin(1, 0), piece_node;
+  first_interval.reserve(std::size_t(fine.F.rows()));
+  piece_begin.reserve(std::size_t(fine.F.rows()) + 1);
+  for (Eigen::Index f = 0; f < fine.F.rows(); ++f) {
+    poll_interrupt(std::size_t(f), stop);
+    std::array<int, 3> corners;
+    double centre = 0;
+    for (int k = 0; k < 3; ++k) {
+      corners[std::size_t(k)] = coarse_vertex[std::size_t(fine.F(f, k))];
+      centre += mu[std::size_t(fine.F(f, k))] / 3;
+    }
+    std::sort(corners.begin(), corners.end());
+    const auto found = face_of_corners.find(corners);
+    int g = found != face_of_corners.end() ? found->second : -1;
+    for (int k = 0; g < 0 && k < 3; ++k)
+      if (corners[std::size_t(k)] >= 0)
+        g = holding(corners[std::size_t(k)], interval_of(centre, intervals));
+    for (int k = 0; g < 0 && k < 3; ++k) {
+      const int c = corners[std::size_t(k)];
+      if (c >= 0 && around_begin[std::size_t(c)] < around_begin[std::size_t(c) + 1])
+        g = around[std::size_t(around_begin[std::size_t(c)])];
+    }
+    if (g >= 0) {
+      first_interval.push_back(out.face_first_interval[std::size_t(g)]);
+      for (int p = out.face_piece_begin[std::size_t(g)];
+           p < out.face_piece_begin[std::size_t(g) + 1]; ++p)
+        piece_node.push_back(out.piece_node[std::size_t(p)]);
+    } else {
+      first_interval.push_back(0);
+    }
+    piece_begin.push_back(int(piece_node.size()));
+  }
+  out.mesh = std::move(fine);
+  out.mu = std::move(mu);
+  out.face_first_interval = std::move(first_interval);
+  out.face_piece_begin = std::move(piece_begin);
+  out.piece_node = std::move(piece_node);
+}
+
+}  // namespace
+
 NodePositions node_positions(const Mesh& input, const BuildOptions& options,
                              const StopRequested& stop) {
   if (options.levels < kMinLevels || options.levels > kMaxLevels)
@@ -19,7 +105,9 @@ NodePositions node_positions(const Mesh& input, const BuildOptions& options,
                      std::to_string(kMaxLevels) + "]");
   NodePositions out;
   PreparedSurface prepared = prepare_surface(input, options, stop);
-  out.mesh = prepared.proxy ? std::move(*prepared.proxy) : std::move(prepared.posed);
+  out.mesh = prepared.proxy    ? std::move(*prepared.proxy)
+             : prepared.coarse ? std::move(*prepared.coarse)
+                               : std::move(prepared.posed);
   out.pose = prepared.pose;
   const MeshEdges edges = mesh_edges(out.mesh.F);
   out.mu = normalised_mu(out.mesh, edges, options, stop);
@@ -65,6 +153,9 @@ NodePositions node_positions(const Mesh& input, const BuildOptions& options,
   out.face_first_interval = sliced.first_interval;
   out.face_piece_begin = sliced.piece_begin;
   out.piece_node = reeb.piece_node;
+  if (prepared.coarse)
+    show_fine_surface(out, std::move(prepared.posed), prepared.coarse_vertex, 1 << options.levels,
+                      stop);
   return out;
 }
 

@@ -25,7 +25,9 @@ struct NodePlacementLevel {
 struct NodePositions {
   // The surface the graph was built on (the cleaned, pose-normalised mesh, or its watertight
   // proxy when the build used one), in the frame in which the ARG measures its barycentres
-  // (centre of mass at the origin, principal axes on x, y, z, unit RMS radius).
+  // (centre of mass at the origin, principal axes on x, y, z, unit RMS radius). A mesh built on
+  // a collapsed copy (PreparedSurface::coarse) is shown as the fine cleaned mesh: mu and the
+  // nodes' pieces are the copy's, carried through the collapse's vertex map.
   Mesh mesh;
   Pose pose;                               // what took the input into that frame (apply_pose)
   std::vector<double> mu;                  // mu_N in [0, 1] per vertex of `mesh`

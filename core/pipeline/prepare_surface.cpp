@@ -6,6 +6,7 @@
 
 #include "common/errors.hpp"
 #include "mesh/bridge_pieces.hpp"
+#include "mesh/collapse_short_edges.hpp"
 #include "mesh/connected_components.hpp"
 #include "mesh/face_subset.hpp"
 #include "mesh/fill_holes.hpp"
@@ -190,6 +191,11 @@ PreparedSurface prepare_surface(const Mesh& input, const BuildOptions& options,
     ProxyOptions proxy;
     proxy.resolution = options.proxy_resolution;
     out.proxy = watertight_proxy(out.posed, proxy, stop).mesh;
+  } else if (out.posed.V.rows() > kCoarseAbove) {
+    CollapseOptions collapse;
+    collapse.min_length = std::sqrt(4.0 * out.area / (std::sqrt(3.0) * kCoarseTriangles));
+    out.coarse = collapse_short_edges(out.posed, collapse, stop, &out.coarse_vertex);
+    out.coarse_edges = mesh_edges(out.coarse->F, stop);
   }
   return out;
 }

@@ -127,9 +127,10 @@ signal_masks() {
 # each read once: sets workers (how many were seen) and workers_blocking (how many of them
 # blocked SIGINT). mu's workers live for one Dijkstra each, a few milliseconds, so the loop
 # reads /proc with the shell's own read and never forks; it polls until one is seen or the
-# statement has run 20 s.
+# statement has run 20 s. A thread read as it exits shows an empty SigBlk (its signal state is
+# gone by then), so a mask without SIGINT counts only if the thread is still there, not dead.
 watch_workers() {
-  local task name key value tid
+  local task name key value tid mask state
   declare -A seen=()
   workers=0 workers_blocking=0
   while [[ $workers -lt 1 && $(($(now_ms) - started)) -lt 20000 ]]; do
@@ -139,14 +140,21 @@ watch_workers() {
       name=""
       { read -r name < "$task/comm"; } 2>/dev/null
       [[ $name == "arg worker" ]] || continue
+      mask=""
       while read -r key value; do
-        if [[ $key == SigBlk: ]]; then
-          seen[$tid]=1
-          workers=$((workers + 1))
-          workers_blocking=$((workers_blocking + ((0x$value >> 1) & 1)))
-          break
-        fi
+        [[ $key == SigBlk: ]] && { mask=$value; break; }
       done 2>/dev/null < "$task/status"
+      [[ -n $mask ]] || continue
+      if (( ((0x$mask >> 1) & 1) == 0 )); then  # only a thread still alive after it counts
+        state=""
+        while read -r key value; do
+          [[ $key == State: ]] && { state=$value; break; }
+        done 2>/dev/null < "$task/status"
+        [[ -n $state && $state != [XZ]* ]] || continue
+      fi
+      seen[$tid]=1
+      workers=$((workers + 1))
+      workers_blocking=$((workers_blocking + ((0x$mask >> 1) & 1)))
     done
   done
 }
@@ -195,9 +203,11 @@ cancelled "$rank_sql" "ranking every pair of 1,000 ARGs"
 # threads of their own): the cancel still arrives, because only the backend's own thread takes
 # signals; every other thread blocks them.
 # The textured build is a statement of its own, so the second counts from the big build; its
-# workers are found by name (worker_threads), whenever mu started them.
+# workers are found by name (worker_threads), whenever mu started them. The big mesh is built
+# on a collapsed copy whose mu, with the default base points, runs for a few tens of
+# milliseconds: 4,096 base points keep its workers alive for seconds, past the first second.
 prelude="SET arg.max_build_threads = 2; SELECT arg_build(mesh, texture) IS NOT NULL FROM textured"
-threads_sql="SELECT arg_build(mesh, 'threads=2') IS NOT NULL FROM big_mesh"
+threads_sql="SELECT arg_build(mesh, 'threads=2 base_points=4096') IS NOT NULL FROM big_mesh"
 cancelled "$threads_sql" "a two-thread arg_build after a textured build" masks
 prelude=""
 result "$([[ $workers -ge 1 && $workers_blocking == "$workers" && $blocking == "$threads" && $main_blocks == 0 ]] && echo 1)" \
