@@ -48,6 +48,12 @@ struct PolygonSoup {
   std::vector<DisplayImage> display_images;
   std::vector<DisplayMap> display_maps;
   std::vector<int> face_display_map;
+  // Also for display, kept when keep_face_materials is set (an OBJ read with material textures):
+  // the materials its faces use (usemtl names, in order of first use) and each face's index in
+  // them (-1: none; empty when the faces could not be matched to their lines).
+  bool keep_face_materials = false;
+  std::vector<std::string> material_names;
+  std::vector<int> face_material;
   std::size_t faces_seen = 0;     // faces in the file, including skipped ones
   std::size_t faces_skipped = 0;  // faces with fewer than three corners
 

@@ -23,10 +23,23 @@ const char* format_name(MeshFormat format);
 // Guesses the format from the first bytes (magic numbers, keywords); never throws.
 MeshFormat detect_mesh_format(std::string_view bytes);
 
+// The most distinct images an OBJ's material textures map; the 3D view loads at most this many
+// (argtool view-data keeps the same cap for a GLB's).
+constexpr std::size_t kMaxDisplayImages = 16;
+
+// A texture image for the faces of one OBJ material (usemtl NAME), for display only.
+struct MaterialTexture {
+  std::string material;
+  std::string_view image;  // PNG, JPEG, TGA or BMP bytes
+};
+
 struct ReadOptions {
   Limits limits;
   // Optional texture image (PNG, JPEG, TGA, ...) for formats that keep it outside the mesh (OBJ).
   std::string_view texture;
+  // For display only (read with a MeshTexture): each OBJ material's texture. The mesh and its
+  // colours never depend on them (colour comes from `texture` alone); ignored by other formats.
+  std::vector<MaterialTexture> material_textures;
   StopRequested stop;
   // The format, when the caller knows it; Unknown means detect it from the content.
   MeshFormat format = MeshFormat::Unknown;
@@ -72,7 +85,9 @@ struct MeshTexture {
 // Parses `bytes` into a triangle mesh with per-triangle colour when the input has any.
 // Throws InputError (naming format and line/offset) or LimitError. With `texture`, also keeps
 // the texture coordinates of an OBJ read with its texture, or of each GLB primitive whose base
-// colour texture decodes, with those textures (left empty when there is none).
+// colour texture decodes, with those textures (left empty when there is none). An OBJ read with
+// material_textures maps each face by its material instead (a material without a usable image,
+// or a face before any usemtl, maps none; the warnings name such materials).
 Mesh read_mesh(std::string_view bytes, const ReadOptions& options = {},
                ReadReport* report = nullptr, MeshTexture* texture = nullptr);
 

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -32,14 +34,21 @@ struct ObjScan {
   std::int64_t max_vertex_ref = 0, max_texcoord_ref = 0;
   std::size_t max_vertex_line = 0, max_texcoord_line = 0;
   std::vector<StreamPiece> pieces;
+  // With `materials`: the usemtl names in order of first use, and per f line the index of the
+  // last one before it (-1 before any).
+  std::vector<std::string> material_names;
+  std::vector<int> face_material;
 };
 
 // OpenMesh's OBJ reader silently skips what it cannot parse: a vertex line with a bad number is
 // dropped (shifting every later index), a bad face index becomes vertex -1 or is ignored, and
 // "mtllib" makes it open a file by name. So every line it would act on is checked here first,
-// with its line number for the error, and mtllib/usemtl lines are cut from its stream.
-ObjScan scan_obj(std::string_view bytes, const Limits& limits) {
+// with its line number for the error, and mtllib/usemtl lines are cut from its stream; with
+// `materials`, each face's material is recorded here instead.
+ObjScan scan_obj(std::string_view bytes, const Limits& limits, bool materials) {
   ObjScan scan;
+  std::map<std::string, int, std::less<>> material_index;
+  int material = -1;
   LineScanner lines(bytes);
   std::vector<std::string_view> tokens;
   std::string_view raw;
@@ -55,6 +64,21 @@ ObjScan scan_obj(std::string_view bytes, const Limits& limits) {
     if (key == "mtllib" || key == "usemtl") {
       scan.pieces.push_back({bytes.substr(kept_from, lines.line_offset() - kept_from), kept_from});
       kept_from = lines.line_offset() + raw.size();
+      if (materials && key == "usemtl") {
+        // The whole rest of the line, as an MTL's newmtl names it (names may hold spaces).
+        const std::string_view name = strip_comment(line.substr(key.size()));
+        if (name.empty()) {
+          material = -1;
+        } else {
+          auto found = material_index.find(name);
+          if (found == material_index.end()) {
+            found =
+                material_index.emplace(std::string(name), int(scan.material_names.size())).first;
+            scan.material_names.emplace_back(name);
+          }
+          material = found->second;
+        }
+      }
     } else if (key == "v") {
       double x[6];
       if (count < 4) fail("a vertex needs 3 coordinates");
@@ -118,6 +142,7 @@ ObjScan scan_obj(std::string_view bytes, const Limits& limits) {
         }
       }
       ++scan.faces;
+      if (materials) scan.face_material.push_back(material);
     }
   }
   if (scan.max_vertex_ref > std::int64_t(scan.vertices)) {
@@ -144,7 +169,8 @@ ObjScan scan_obj(std::string_view bytes, const Limits& limits) {
 }  // namespace
 
 void read_obj(std::string_view bytes, SoupBuilder& out, ReadReport& report) {
-  ObjScan scan = scan_obj(bytes, out.limits());
+  PolygonSoup& soup = out.soup();
+  ObjScan scan = scan_obj(bytes, out.limits(), soup.keep_face_materials);
   out.declared_counts(scan.vertices, scan.faces);
   report.variant = "text";
   MemoryStreamBuf buffer(std::move(scan.pieces));
@@ -156,6 +182,7 @@ void read_obj(std::string_view bytes, SoupBuilder& out, ReadReport& report) {
   out.set_locator(where);
   out.set_immediate_index_check(true);  // OpenMesh reads every vertex before the first face
   SoupImporter importer(out);
+  if (soup.keep_face_materials) importer.set_call_materials(&scan.face_material);
   OpenMesh::IO::Options options;
   if (scan.texcoords > 0) options += OpenMesh::IO::Options::FaceTexCoord;
   // OpenMesh keeps "v x y z r g b" colours in a list of their own, indexed like the vertices,
@@ -173,6 +200,17 @@ void read_obj(std::string_view bytes, SoupBuilder& out, ReadReport& report) {
                           std::to_string(scan.vertices) + " vertices");
   }
   if (colours) report.variant = "text with vertex colours";
+  if (soup.keep_face_materials) {
+    // The faces' materials follow the f lines only if OpenMesh added each line as one face.
+    if (soup.faces_seen == scan.faces) {
+      soup.material_names = std::move(scan.material_names);
+    } else {
+      soup.face_material.clear();
+      report.warnings.push_back("the materials' textures are not shown: OpenMesh added " +
+                                std::to_string(soup.faces_seen) + " faces for " +
+                                std::to_string(scan.faces) + " face lines");
+    }
+  }
 }
 
 }  // namespace arg::io

@@ -26,7 +26,13 @@ void SoupImporter::set_point(OpenMesh::VertexHandle vh, const OpenMesh::Vec3f& p
 OpenMesh::FaceHandle SoupImporter::add_face(const VHandles& indices) {
   scratch_.resize(indices.size());
   for (std::size_t i = 0; i < indices.size(); ++i) scratch_[i] = indices[i].idx();
-  return OpenMesh::FaceHandle(builder_.add_face(scratch_.data(), scratch_.size()));
+  const std::size_t call = builder_.soup().faces_seen;  // add_face counts every call
+  const int face = builder_.add_face(scratch_.data(), scratch_.size());
+  if (call_materials_ && face >= 0) {
+    builder_.soup().face_material.push_back(
+        call < call_materials_->size() ? (*call_materials_)[call] : -1);
+  }
+  return OpenMesh::FaceHandle(face);
 }
 
 void SoupImporter::add_face_texcoords(OpenMesh::FaceHandle fh, OpenMesh::VertexHandle,

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include <OpenMesh/Core/IO/importer/BaseImporter.hh>
 
@@ -14,6 +15,10 @@ namespace arg::io {
 class SoupImporter : public OpenMesh::IO::BaseImporter {
  public:
   explicit SoupImporter(SoupBuilder& builder) : builder_(builder) {}
+
+  // The material of each face the reader adds, in call order (an OBJ's f lines), copied to the
+  // soup's face_material for the faces it keeps; null: none kept.
+  void set_call_materials(const std::vector<int>* materials) { call_materials_ = materials; }
 
   OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3f& p) override;
   OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3d& p) override;
@@ -72,6 +77,7 @@ class SoupImporter : public OpenMesh::IO::BaseImporter {
   SoupBuilder& builder_;
   std::vector<int> scratch_;
   std::vector<float> uv_scratch_;
+  const std::vector<int>* call_materials_ = nullptr;
 };
 
 }  // namespace arg::io

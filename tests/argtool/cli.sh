@@ -338,4 +338,28 @@ for t in (0, 1):
 for i in (0, 1):
     assert open(f"{sys.argv[2]}-{i}", "rb").read(8) == b"\x89PNG\r\n\x1a\n"
 PY
+# 13. An OBJ of two materials, each with its own texture (--material NAME=PATH, once each): each
+# face maps its material's, both images written; a --material without NAME or PATH is refused.
+sed -e '/^f 1\/1 3\/3 2\/2/i usemtl floor' -e '/^f 1\/1 2\/2 5\/5/i usemtl roof tiles' \
+  "$work/square.obj" > "$work/two.obj"
+printf '\0\0\2\0\0\0\0\0\0\0\0\0\2\0\2\0\30\0' > "$work/blue.tga"
+for _ in 1 2 3 4; do printf '\377\0\0'; done >> "$work/blue.tga"
+"$argtool" view-data "$work/two.obj" --material "floor=$work/red.tga" \
+  --material "roof tiles=$work/blue.tga" -o "$work/two-obj.json" \
+  --texture-output "$work/two-obj-texture" > /dev/null 2>&1
+check "view-data --material: each material's texture maps its faces" \
+  python3 - "$work/two-obj.json" "$work/two-obj-texture" << 'PY'
+import json, sys
+v = json.load(open(sys.argv[1]))
+assert len(v["textures"]) == 2 and len(v["images"]) == 2, (v["textures"], v["images"])
+assert set(v["face_textures"]) == {0, 1}, v["face_textures"]
+assert v["texture_note"] is None, v["texture_note"]
+for i in (0, 1):
+    assert open(f"{sys.argv[2]}-{i}", "rb").read(8) == b"\x89PNG\r\n\x1a\n"
+PY
+"$argtool" view-data "$work/two.obj" --material "=$work/red.tga" -o "$work/none.json" \
+  > /dev/null 2> "$work/material.err"
+status=$?
+check "view-data --material without a NAME is refused, naming the option" bash -c \
+  "test $status -ne 0 && grep -q -- '--material' '$work/material.err'"
 echo "1..$n"

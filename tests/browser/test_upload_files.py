@@ -6,7 +6,7 @@ import io
 import sys
 import zipfile
 from pathlib import Path
-from typing import Dict
+from typing import Dict, List
 
 import pytest
 
@@ -38,7 +38,26 @@ def test_an_obj_takes_the_map_kd_of_the_material_it_uses() -> None:
     sent = collect([("model.obj", OBJ), ("model.mtl", MTL), ("skin.png", PNG), ("other.png", PNG + b"x")],
                    LIMIT)
     assert sent.name == "model.obj" and sent.texture == PNG and sent.texture_name == "skin.png"
-    assert sent.notes == []
+    assert sent.notes == [] and sent.materials == {"skin": PNG}
+
+
+def test_an_obj_keeps_the_image_of_each_material_it_uses() -> None:
+    obj = OBJ + b"usemtl two words\nf 1/1 3/3 2/2\nusemtl plain\nf 1 2 3\nusemtl skin\nf 3 2 1\n"
+    mtl = MTL + b"newmtl two words\nmap_Kd wood.jpg\nnewmtl plain\nKd 1 0 0\n"
+    files = [("model.obj", obj), ("model.mtl", mtl), ("skin.png", PNG), ("wood.jpg", JPEG),
+             ("other.png", PNG + b"x")]
+    sent = collect(files, LIMIT)
+    # The first material's image colours the view; each material's maps its faces.
+    assert sent.texture == PNG and sent.texture_name == "skin.png"
+    assert sent.materials == {"skin": PNG, "two words": JPEG}
+    assert sent.notes == ["the 3D view maps each material's texture (2 images: skin.png, wood.jpg); its "
+                          "colours, and faces of a material without one, come from skin.png"]
+    notes: List[str] = []
+    mtls = {"model.mtl": ("model.mtl", mtl)}
+    images = {"skin.png": ("skin.png", PNG)}
+    assert upload_files.obj_texture("model.obj", obj, mtls, images, notes) == (
+        "skin.png", PNG, {"skin": PNG})
+    assert notes == ["the MTL of model.obj names wood.jpg, not sent"]
 
 
 def test_a_zip_with_folders_and_a_readme_is_unpacked() -> None:
@@ -51,12 +70,12 @@ def test_a_zip_with_folders_and_a_readme_is_unpacked() -> None:
 
 def test_an_obj_with_one_image_and_no_mtl_uses_it() -> None:
     sent = collect([("model.obj", OBJ), ("anything.jpg", JPEG)], LIMIT)
-    assert sent.texture == JPEG and sent.texture_name == "anything.jpg"
+    assert sent.texture == JPEG and sent.texture_name == "anything.jpg" and sent.materials == {}
 
 
 def test_an_image_the_mtl_does_not_name_is_not_guessed() -> None:
     sent = collect([("model.obj", OBJ), ("model.mtl", MTL), ("wrong.png", PNG)], LIMIT)
-    assert sent.texture is None
+    assert sent.texture is None and sent.materials == {}
     assert sent.notes == ["the MTL of model.obj names skin.png, not sent: shown without a texture"]
 
 

@@ -86,6 +86,41 @@ TEST(ReadRealData, SpotObjWithPngTexture) {
   expect_varied_colours(mesh);
 }
 
+// The spider's five materials each name an image: every face maps its material's, each image
+// once, and the mesh is the one read without them.
+TEST(ReadRealData, SpiderObjMapsEachMaterialsTexture) {
+  ARG_REQUIRE_SHARED("textured/spider/spider.obj");
+  const std::string dir = test_io::shared_data_dir() + "/textured/spider/";
+  std::string obj;
+  ASSERT_TRUE(test_io::read_file(dir + "spider.obj", obj));
+  const char* const materials[][2] = {{"Skin", "wal67ar_small.jpg"},
+                                      {"Brusttex", "wal69ar_small.jpg"},
+                                      {"HLeibTex", "SpiderTex.jpg"},
+                                      {"BeinTex", "drkwood2.jpg"},
+                                      {"Augentex", "engineflare1.jpg"}};
+  std::vector<std::string> images(5);
+  ReadOptions options;
+  for (std::size_t i = 0; i < 5; ++i) {
+    ASSERT_TRUE(test_io::read_file(dir + materials[i][1], images[i]));
+    options.material_textures.push_back({materials[i][0], images[i]});
+  }
+  ReadReport report;
+  MeshTexture texture;
+  const Mesh mesh = read_mesh(obj, options, &report, &texture);
+  EXPECT_TRUE(report.warnings.empty()) << report.warnings.front();
+  // Brusttex is in the MTL but no face uses it.
+  EXPECT_EQ(texture.images.size(), 4u);
+  ASSERT_EQ(texture.maps.size(), 4u);
+  std::vector<std::size_t> per_map(4, 0);
+  for (int map : texture.triangle_map) {
+    ASSERT_GE(map, 0);
+    ++per_map[std::size_t(map)];
+  }
+  for (std::size_t count : per_map) EXPECT_GT(count, 0u);
+  const Mesh plain = read_mesh(obj);
+  EXPECT_TRUE(mesh.V == plain.V && mesh.F == plain.F);
+}
+
 TEST(ReadRealData, AfricanHeadAndDiabloObjWithRleTga) {
   ARG_REQUIRE_SHARED("textured/african_head/african_head.obj");
   ReadReport report;

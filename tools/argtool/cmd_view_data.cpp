@@ -5,6 +5,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "command_registry.hpp"
@@ -26,17 +27,33 @@ namespace {
 constexpr int kMaxTextureSide = 4096;
 constexpr std::size_t kMaxTextureBytes = std::size_t(32) << 20;
 // The most images one view maps (a page loads each): the faces of others show their colours.
-constexpr std::size_t kMaxTextureImages = 16;
+// The same cap as the core's on an OBJ's material images.
+constexpr std::size_t kMaxTextureImages = arg::kMaxDisplayImages;
 
 struct ViewDataArgs {
   std::string mesh, texture, output, texture_output;
-  std::string up;  // the file axis that points up (--up), for the view's start
+  std::string up;                      // the file axis that points up (--up), for the view's start
+  std::vector<std::string> materials;  // --material NAME=PATH, as given
   long max_triangles = 500000;
   arg::BuildOptions options;
 };
 
-// The mesh as read, with its texture when `want_texture` (OBJ: `texture_path`; GLB: its own).
-// A separate texture that cannot be read is left out, with the reason in `note`.
+void add_note(std::string& note, const std::string& more) {
+  note += (note.empty() ? "" : "; ") + more;
+}
+
+// One --material value: NAME=PATH, split at the last '=' (a material's name may hold one).
+std::pair<std::string, std::string> material_option(const std::string& value) {
+  const std::size_t eq = value.rfind('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == value.size())
+    throw std::runtime_error("--material '" + value +
+                             "': give NAME=PATH, a material's name and its texture image");
+  return {value.substr(0, eq), value.substr(eq + 1)};
+}
+
+// The mesh as read, with its texture when `want_texture` (OBJ: `texture_path`, or each
+// material's; GLB: its own). A separate texture that cannot be read is left out, with the
+// reason in `note`, as are the materials' textures that are not shown.
 arg::Mesh read_view_mesh(const ViewDataArgs& a, bool want_texture, arg::MeshTexture& texture,
                          std::string& note) {
   const std::string bytes = argtool::read_file_bytes(a.mesh);
@@ -45,6 +62,12 @@ arg::Mesh read_view_mesh(const ViewDataArgs& a, bool want_texture, arg::MeshText
   const std::string image = a.texture.empty() ? std::string() : argtool::read_file_bytes(a.texture);
   arg::ReadOptions read;
   read.texture = image;
+  std::vector<std::pair<std::string, std::string>> materials;  // name, image bytes
+  for (const std::string& value : a.materials) {
+    auto [name, path] = material_option(value);
+    materials.emplace_back(std::move(name), argtool::read_file_bytes(path));
+  }
+  for (const auto& [name, encoded] : materials) read.material_textures.push_back({name, encoded});
   arg::ReadReport report;
   arg::Mesh mesh;
   try {
@@ -64,6 +87,9 @@ arg::Mesh read_view_mesh(const ViewDataArgs& a, bool want_texture, arg::MeshText
   if (texture.empty() && note.empty())
     for (const std::string& warning : report.warnings)
       if (warning.find("texture") != std::string::npos) note = warning;
+  if (!texture.empty() && !materials.empty())
+    for (const std::string& warning : report.warnings)
+      if (warning.find("material") != std::string::npos) add_note(note, warning);
   return mesh;
 }
 
@@ -94,10 +120,6 @@ std::string write_image(const arg::io::DisplayImage& image, const std::string& p
   }
   argtool::write_png(image.image, path);
   return "image/png";
-}
-
-void add_note(std::string& note, const std::string& more) {
-  note += (note.empty() ? "" : "; ") + more;
 }
 
 // The textures the page maps: the images written (image i at PATH-i) with their MIME types, and
@@ -297,6 +319,11 @@ const bool registered = argtool::register_command(
       app.add_option("mesh", a->mesh, "mesh file")->required()->check(CLI::ExistingFile);
       app.add_option("-o,--output", a->output, "JSON to write")->required();
       app.add_option("--texture", a->texture, "texture image for OBJ")->check(CLI::ExistingFile);
+      app.add_option("--material", a->materials,
+                     "NAME=PATH: the texture image of an OBJ's material NAME (usemtl), "
+                     "repeatable; the view maps each face's, --texture still colours the mesh")
+          ->allow_extra_args(false)
+          ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
       app.add_option("--texture-output", a->texture_output,
                      "where to write the textures the view maps: image i (from 0) at PATH-i, "
                      "PNG or JPEG, with their coordinates in the JSON; without it, none is mapped");

@@ -323,7 +323,7 @@ async def upload(request: Request) -> HTMLResponse:
     except psycopg.Error as error:
         raise errors.ServerRefused(sent.name, error) from error
     # The upload in 3D beside its ranking (its view.json is made when the page asks for it).
-    view_src = (f"/upload/{viewdata.keep_upload(sent.name, sent.mesh, sent.texture)}/view.json"
+    view_src = (f"/upload/{viewdata.keep_upload(sent.name, sent.mesh, sent.texture, sent.materials)}/view.json"
                 if three_installed() else None)
     return page(request, "ranked.html", query=None, upload_name=sent.name, rows=rows, action=None,
                 upload_view=view_src, upload_texture=sent.texture_name, upload_notes=sent.notes, **form)

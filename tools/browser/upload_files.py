@@ -31,13 +31,15 @@ class BadFiles(Exception):
 
 
 class Upload(NamedTuple):
-    """The mesh to search with, the texture image its 3D view maps (an OBJ's; None if none), and
-    what was left out and why."""
+    """The mesh to search with, the texture image that colours its 3D view (an OBJ's; None if
+    none), what was left out and why, and the image sent for each material the OBJ uses (by
+    usemtl name; empty without an MTL): the 3D view maps each face's."""
     name: str
     mesh: bytes
     texture: Optional[bytes]
     texture_name: Optional[str]
     notes: List[str]
+    materials: Dict[str, bytes]
 
 
 def file_name(given: str) -> str:
@@ -140,15 +142,17 @@ def obj_material_names(obj: bytes) -> Tuple[List[str], List[str]]:
     return libraries, used
 
 
-def obj_texture(name: str, obj: bytes, mtls: Dict[str, Tuple[str, bytes]],
-                images: Dict[str, Tuple[str, bytes]], notes: List[str]) -> Tuple[Optional[str], Optional[bytes]]:
-    """The texture image an OBJ's view maps: the map_Kd of the first material it uses that names a
-    sent image (through the MTLs it names, or the one sent), or the one image sent with no MTL."""
+def obj_texture(name: str, obj: bytes, mtls: Dict[str, Tuple[str, bytes]], images: Dict[str, Tuple[str, bytes]],
+                notes: List[str]) -> Tuple[Optional[str], Optional[bytes], Dict[str, bytes]]:
+    """The texture image that colours an OBJ's view (name, bytes): the map_Kd of the first material
+    it uses that names a sent image (through the MTLs it names, or the one sent), or the one image
+    sent with no MTL; and each material it uses whose map_Kd was sent, with that image's bytes."""
     if not mtls:
         if len(images) > 1:
             raise BadFiles(f"{name} came with {len(images)} images and no MTL to say which it uses: "
                            "send its MTL too, or the one image")
-        return next(iter(images.values()), (None, None))
+        image_name, image = next(iter(images.values()), (None, None))
+        return image_name, image, {}
     libraries, used = obj_material_names(obj)
     named = [mtls[last_part(n).lower()] for n in libraries if last_part(n).lower() in mtls]
     if not named:
@@ -167,18 +171,22 @@ def obj_texture(name: str, obj: bytes, mtls: Dict[str, Tuple[str, bytes]],
             wanted.append(image)
     if not wanted:
         notes.append(f"the MTL of {name} gives no texture image (map_Kd): shown in its colours")
-        return None, None
+        return None, None, {}
     missing = [w for w in wanted if w.lower() not in images]
     present = [w for w in wanted if w.lower() in images]
     if missing:
         notes.append(f"the MTL of {name} names {', '.join(missing)}, not sent"
                      + ("" if present else ": shown without a texture"))
     if not present:
-        return None, None
-    if len(wanted) > 1:
-        notes.append(f"the 3D view maps one texture on an OBJ: {present[0]} (its materials name "
-                     f"{len(wanted)} images)")
-    return images[present[0].lower()]
+        return None, None, {}
+    mapped = {m: images[last_part(textures[m]).lower()][1] for m in used
+              if m in textures and last_part(textures[m]).lower() in images}
+    if len(present) > 1:
+        notes.append(f"the 3D view maps each material's texture ({len(present)} images: "
+                     f"{', '.join(present)}); its colours, and faces of a material without one, "
+                     f"come from {present[0]}")
+    image_name, image = images[present[0].lower()]
+    return image_name, image, mapped
 
 
 def collect(files: List[Tuple[str, bytes]], max_bytes: int) -> Upload:
@@ -233,5 +241,5 @@ def collect(files: List[Tuple[str, bytes]], max_bytes: int) -> Upload:
             if not data or (magic is not None and not data.startswith(magic)):
                 raise BadFiles(f"{n} is not a {kind[1:].upper()} image")
             images[n.lower()] = (n, data)
-    texture_name, texture = obj_texture(name, mesh, mtls, images, notes) if others else (None, None)
-    return Upload(name, mesh, texture, texture_name, notes)
+    texture_name, texture, mapped = obj_texture(name, mesh, mtls, images, notes) if others else (None, None, {})
+    return Upload(name, mesh, texture, texture_name, notes, mapped)

@@ -10,7 +10,7 @@ import tempfile
 import threading
 from collections import OrderedDict
 from pathlib import Path
-from typing import List, NamedTuple, Optional, Tuple
+from typing import Dict, List, NamedTuple, Optional, Tuple
 
 HERE = Path(__file__).resolve().parent
 # server.sh sets it from BUILD_DIR; the default is the repository's build folder.
@@ -61,8 +61,8 @@ def run_argtool(args: List[str], slow: str, failed: str) -> None:
         raise ViewUnavailable(f"{failed}: {why}", 413 if "too large to display" in why else 422)
 
 
-_cache: "OrderedDict[Tuple[str, str, str, str, str], View]" = OrderedDict()
-_uploads: "OrderedDict[str, Tuple[str, bytes, Optional[bytes]]]" = OrderedDict()
+_cache: "OrderedDict[Tuple[str, str, str, str, str, str], View]" = OrderedDict()
+_uploads: "OrderedDict[str, Tuple[str, bytes, Optional[bytes], Dict[str, bytes]]]" = OrderedDict()
 _lock = threading.Lock()
 
 
@@ -79,14 +79,24 @@ def convert(model_id: int, file: str, mesh: Optional[bytes], triangles: Optional
     return convert_bytes(f"model {model_id}", file, mesh, texture, options, up)
 
 
-def keep_upload(file: str, mesh: bytes, texture: Optional[bytes] = None) -> str:
-    """Keeps an uploaded mesh, with the texture sent for it (an OBJ's), for its 3D view (the last
-    KEEP_UPLOADS) and returns its key."""
+def materials_digest(materials: Optional[Dict[str, bytes]]) -> str:
+    """One hash of an OBJ's material textures (names and bytes, in any order): part of a key."""
+    digest = hashlib.sha256()
+    for name, image in sorted((materials or {}).items()):
+        digest.update(hashlib.sha256(name.encode()).digest() + hashlib.sha256(image).digest())
+    return digest.hexdigest()
+
+
+def keep_upload(file: str, mesh: bytes, texture: Optional[bytes] = None,
+                materials: Optional[Dict[str, bytes]] = None) -> str:
+    """Keeps an uploaded mesh, with the texture sent for it and each material's (an OBJ's), for its
+    3D view (the last KEEP_UPLOADS) and returns its key."""
     digest = hashlib.sha256(mesh)
     digest.update(hashlib.sha256(texture or b"").digest())
+    digest.update(materials_digest(materials).encode())
     key = digest.hexdigest()[:32]
     with _lock:
-        _uploads[key] = (file, mesh, texture)
+        _uploads[key] = (file, mesh, texture, dict(materials or {}))
         _uploads.move_to_end(key)
         while len(_uploads) > KEEP_UPLOADS:
             _uploads.popitem(last=False)
@@ -99,8 +109,8 @@ def convert_upload(key: str) -> View:
         kept = _uploads.get(key)
     if kept is None:
         raise ViewUnavailable("this upload is no longer kept for the 3D view: upload it again", 404)
-    file, mesh, texture = kept
-    return convert_bytes(f"the upload {file}", file, mesh, texture)
+    file, mesh, texture, materials = kept
+    return convert_bytes(f"the upload {file}", file, mesh, texture, materials=materials)
 
 
 def texture_of(view: View, what: str, index: int = 0) -> Tuple[bytes, str]:
@@ -121,13 +131,14 @@ def texture_of(view: View, what: str, index: int = 0) -> Tuple[bytes, str]:
 
 
 def convert_bytes(what: str, file: str, mesh: bytes, texture: Optional[bytes] = None,
-                  options: str = "", up: str = "") -> View:
+                  options: str = "", up: str = "", materials: Optional[Dict[str, bytes]] = None) -> View:
     """The view of MESH (named WHAT in messages) by `argtool view-data`, its graph built with the
-    build OPTIONS (empty: the defaults), kept for reuse by its bytes, texture, suffix and options
-    text and UP (not by WHAT, which only a failure's message, never kept, names). An upload passes no
-    options and a catalogue object its value's written out, so the two keep separate views."""
+    build OPTIONS (empty: the defaults), kept for reuse by its bytes, texture, material textures
+    (an OBJ's, by usemtl name: each face maps its material's), suffix and options text and UP (not
+    by WHAT, which only a failure's message, never kept, names). An upload passes no options and a
+    catalogue object its value's written out, so the two keep separate views."""
     key = (hashlib.sha256(mesh).hexdigest(), hashlib.sha256(texture or b"").hexdigest(),
-           Path(file or "").suffix.lower(), options, up)
+           Path(file or "").suffix.lower(), options, up, materials_digest(materials))
     with _lock:
         if key in _cache:
             _cache.move_to_end(key)
@@ -149,6 +160,11 @@ def convert_bytes(what: str, file: str, mesh: bytes, texture: Optional[bytes] = 
         if texture:
             (Path(scratch) / "given-texture").write_bytes(texture)
             args += ["--texture", str(Path(scratch) / "given-texture")]
+        for i, (name, image_bytes) in enumerate(sorted((materials or {}).items())):
+            given = Path(scratch) / f"material-{i}"
+            given.write_bytes(image_bytes)
+            # One word: a name with a leading - is never an option; argtool splits at the last =.
+            args.append(f"--material={name}={given}")
         run_argtool(args, f"{what} took more than {TIMEOUT} s to prepare for the 3D view",
                     f"{what} cannot be shown in 3D")
         data = target.read_bytes()
