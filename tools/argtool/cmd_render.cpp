@@ -53,11 +53,8 @@ int run_render(const RenderArgs& a) {
   const arg::NodePositions model = arg::node_positions(argtool::read_mesh_file(a.mesh), a.options);
   if (a.view == "upright") {
     // The surface is posed: the file's axes are the pose's columns.
-    arg::UprightHint hint;
-    hint.file_axes = model.pose.rotation;
-    hint.up = argtool::file_up(a.mesh, a.up);
-    hint.prefer_file_axes = true;
-    ro.view = arg::upright_view(arg::upright_frame(model.mesh, hint));
+    ro.view = arg::upright_view(
+        arg::upright_frame(model.mesh, argtool::upright_hint(a.mesh, a.up, model.pose.rotation)));
   }
   const std::size_t nodes = model.levels[std::size_t(a.level)].centre.size();
   ro.title = a.title.empty() ? std::filesystem::path(a.mesh).filename().string() + "  level " +

@@ -31,10 +31,7 @@ int run_upright(const UprightArgs& a) {
   std::printf("file\tup\tfront\tlongest\tup_vector\tfront_vector\n");
   for (const std::string& path : a.meshes) {
     const arg::Mesh mesh = argtool::read_mesh_file(path);
-    arg::UprightHint hint;
-    hint.up = argtool::file_up(path, a.up);
-    hint.prefer_file_axes = true;
-    const arg::UprightFrame frame = arg::upright_frame(mesh, hint);
+    const arg::UprightFrame frame = arg::upright_frame(mesh, argtool::upright_hint(path, a.up));
     const Eigen::Vector3d longest = arg::surface_pose(mesh).rotation.row(0).transpose();
     std::printf("%s\t%s\t%s\t%s\t%.4f,%.4f,%.4f\t%.4f,%.4f,%.4f\n", path.c_str(),
                 nearest_axis(frame.up).c_str(), nearest_axis(frame.front).c_str(),

@@ -209,10 +209,8 @@ int run_view_data(const ViewDataArgs& a) {
   const auto nv = std::size_t(m.V.rows()), nf = std::size_t(m.F.rows());
   std::string out = "{\"format\":1,";
   // The canonical view (argtool upright) in the same frame: the 3D view starts from it.
-  arg::UprightHint hint;
-  hint.file_axes = p.pose.rotation, hint.up = argtool::file_up(a.mesh, a.up);
-  hint.prefer_file_axes = true;
-  const arg::UprightFrame frame = arg::upright_frame(m, hint);
+  const arg::UprightFrame frame =
+      arg::upright_frame(m, argtool::upright_hint(a.mesh, a.up, p.pose.rotation));
   put_array(out, "up", 3, [&](std::size_t i) { put_number(out, frame.up[long(i)]); });
   out += ',';
   put_array(out, "front", 3, [&](std::size_t i) { put_number(out, frame.front[long(i)]); });

@@ -32,4 +32,13 @@ Eigen::Vector3d file_up(const std::string& path, const std::string& up) {
   return Eigen::Vector3d::Zero();
 }
 
+arg::UprightHint upright_hint(const std::string& path, const std::string& up,
+                              const Eigen::Matrix3d& file_axes) {
+  arg::UprightHint hint;
+  hint.file_axes = file_axes;
+  hint.up = file_up(path, up);
+  hint.prefer_file_axes = true;
+  return hint;
+}
+
 }  // namespace argtool
