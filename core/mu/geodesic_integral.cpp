@@ -76,8 +76,10 @@ std::vector<double> geodesic_integral(const Mesh& mesh, const MeshEdges& edges, 
   std::vector<double> mu(std::size_t(nv), 0.0);
   const int workers = std::max(1, std::min(threads, int(base.size())));
   // Blocks of base points run in parallel; their distances are added in base-point order, so
-  // the sum (and so the ARG bytes) does not depend on the number of threads.
-  const int block = workers;
+  // the sum (and so the ARG bytes) does not depend on the number of threads. With workers, a
+  // block gives each four runs, so that a thread, started anew for each block, outlives the
+  // cost of starting it (a run on a copy's graph takes a fraction of a millisecond).
+  const int block = workers == 1 ? 1 : 4 * workers;
   std::vector<BucketScratch> scratch(static_cast<std::size_t>(block));
   for (auto& s : scratch) prepare_buckets(graph, s);
   for (std::size_t start = 0; start < base.size(); start += std::size_t(block)) {

@@ -125,7 +125,7 @@ signal_masks() {
 
 # Worker threads of backend $1 that parallel_for started (it names them "arg worker"; Linux),
 # each read once: sets workers (how many were seen) and workers_blocking (how many of them
-# blocked SIGINT). mu's workers live for one Dijkstra each, a few milliseconds, so the loop
+# blocked SIGINT). mu's workers live for four Dijkstras each, a millisecond or so, so the loop
 # reads /proc with the shell's own read and never forks; it polls until one is seen or the
 # statement has run 20 s. A thread read as it exits shows an empty SigBlk (its signal state is
 # gone by then), so a mask without SIGINT counts only if the thread is still there, not dead.
@@ -205,7 +205,8 @@ cancelled "$rank_sql" "ranking every pair of 1,000 ARGs"
 # The textured build is a statement of its own, so the second counts from the big build; its
 # workers are found by name (worker_threads), whenever mu started them. The big mesh is built
 # on a collapsed copy whose mu, with the default base points, runs for a few tens of
-# milliseconds: 4,096 base points keep its workers alive for seconds, past the first second.
+# milliseconds, after about two seconds of cleaning and collapse: 4,096 base points keep mu,
+# and its workers, running for most of a second more.
 prelude="SET arg.max_build_threads = 2; SELECT arg_build(mesh, texture) IS NOT NULL FROM textured"
 threads_sql="SELECT arg_build(mesh, 'threads=2 base_points=4096') IS NOT NULL FROM big_mesh"
 cancelled "$threads_sql" "a two-thread arg_build after a textured build" masks
