@@ -4,32 +4,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "collapsed_torus.hpp"
 #include "mesh/collapse_short_edges.hpp"
-#include "test_shapes.hpp"
 
 using namespace arg;
 
-namespace {
-
-struct Collapsed {
-  Mesh fine, coarse;
-  std::vector<int> map;
-};
-
-// A torus collapsed to about a quarter of its vertices.
-Collapsed collapsed_torus() {
-  Collapsed c;
-  c.fine = test::torus(2, 0.6, 120, 45);
-  CollapseOptions o;
-  o.min_length = 0.2;
-  c.coarse = collapse_short_edges(c.fine, o, {}, &c.map);
-  return c;
-}
-
-}  // namespace
-
 TEST(CollapseVertexMap, EveryVertexGoesToANearbySurvivor) {
-  const Collapsed c = collapsed_torus();
+  const test::Collapsed c = test::collapsed_torus();
   ASSERT_LT(c.coarse.V.rows(), c.fine.V.rows() / 3);
   ASSERT_EQ(c.map.size(), std::size_t(c.fine.V.rows()));
   std::vector<int> hits(std::size_t(c.coarse.V.rows()), 0);

@@ -44,6 +44,16 @@ bool has_warning(const ReadReport& report, const std::string& part) {
                      [&](const std::string& w) { return w.find(part) != std::string::npos; });
 }
 
+// Whether `obj`, read with material a's texture a red image, maps no texture in its display.
+bool maps_nothing(const std::string& obj, ReadReport& report) {
+  const std::string red = solid_png(255, 0, 0);
+  ReadOptions options;
+  options.material_textures = {{"a", red}};
+  MeshTexture texture;
+  read_mesh(obj, options, &report, &texture);
+  return texture.empty();
+}
+
 void expect_same_mesh(const Mesh& a, const Mesh& b) {
   ASSERT_EQ(a.V.rows(), b.V.rows());
   ASSERT_EQ(a.F.rows(), b.F.rows());
@@ -129,28 +139,16 @@ TEST(ObjMaterials, WithoutMaterialTexturesOneTextureMapsAll) {
 }
 
 TEST(ObjMaterials, NoCoordinatesNoMaterialTextures) {
-  const std::string obj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl a\nf 1 2 3\n";
-  const std::string red = solid_png(255, 0, 0);
-  ReadOptions options;
-  options.material_textures = {{"a", red}};
   ReadReport report;
-  MeshTexture texture;
-  read_mesh(obj, options, &report, &texture);
-  EXPECT_TRUE(texture.empty());
+  EXPECT_TRUE(maps_nothing("v 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl a\nf 1 2 3\n", report));
   EXPECT_TRUE(has_warning(report, "no texture coordinates"));
 }
 
 // OpenMesh drops a face that repeats a corner: the faces no longer follow the f lines, so no
 // face is trusted to have its line's material.
 TEST(ObjMaterials, FacesOpenMeshDropsTurnThemOff) {
-  const std::string obj = std::string(kObj) + "f 1/1 2/2 1/1\n";
-  const std::string red = solid_png(255, 0, 0);
-  ReadOptions options;
-  options.material_textures = {{"a", red}};
   ReadReport report;
-  MeshTexture texture;
-  read_mesh(obj, options, &report, &texture);
-  EXPECT_TRUE(texture.empty());
+  EXPECT_TRUE(maps_nothing(std::string(kObj) + "f 1/1 2/2 1/1\n", report));
   EXPECT_TRUE(has_warning(report, "OpenMesh added 4 faces for 5 face lines"));
 }
 

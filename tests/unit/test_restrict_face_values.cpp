@@ -4,27 +4,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "collapsed_torus.hpp"
 #include "mesh/collapse_short_edges.hpp"
 #include "mesh/restrict_face_values.hpp"
-#include "test_shapes.hpp"
 
 using namespace arg;
 
 namespace {
-
-struct Collapsed {
-  Mesh fine, coarse;
-  std::vector<int> map;
-};
-
-Collapsed collapsed_torus() {
-  Collapsed c;
-  c.fine = test::torus(2, 0.6, 120, 45);
-  CollapseOptions o;
-  o.min_length = 0.2;
-  c.coarse = collapse_short_edges(c.fine, o, {}, &c.map);
-  return c;
-}
 
 Eigen::Vector3d centroid(const Mesh& m, Eigen::Index f) {
   return (m.V.row(m.F(f, 0)) + m.V.row(m.F(f, 1)) + m.V.row(m.F(f, 2))).transpose() / 3;
@@ -33,7 +19,7 @@ Eigen::Vector3d centroid(const Mesh& m, Eigen::Index f) {
 }  // namespace
 
 TEST(RestrictFaceValues, AConstantStaysConstant) {
-  const Collapsed c = collapsed_torus();
+  const test::Collapsed c = test::collapsed_torus();
   ASSERT_LT(c.coarse.F.rows(), c.fine.F.rows() / 3);
   const std::vector<double> fine(std::size_t(c.fine.F.rows()), 2.5);
   const std::vector<double> out = restrict_face_values(c.fine, c.coarse, c.map, fine);
@@ -42,7 +28,7 @@ TEST(RestrictFaceValues, AConstantStaysConstant) {
 }
 
 TEST(RestrictFaceValues, AFieldKeepsItsRangeAndFollowsTheSurface) {
-  const Collapsed c = collapsed_torus();
+  const test::Collapsed c = test::collapsed_torus();
   std::vector<double> fine;
   for (Eigen::Index f = 0; f < c.fine.F.rows(); ++f) fine.push_back(centroid(c.fine, f).x());
   const std::vector<double> out = restrict_face_values(c.fine, c.coarse, c.map, fine);
@@ -56,7 +42,7 @@ TEST(RestrictFaceValues, AFieldKeepsItsRangeAndFollowsTheSurface) {
 }
 
 TEST(RestrictFaceValues, AVertexNoFineTriangleReachedCountsZero) {
-  const Collapsed c = collapsed_torus();
+  const test::Collapsed c = test::collapsed_torus();
   const std::vector<double> fine(std::size_t(c.fine.F.rows()), 1.0);
   const std::vector<int> unmapped(c.map.size(), -1);
   for (double v : restrict_face_values(c.fine, c.coarse, unmapped, fine)) EXPECT_EQ(v, 0.0);
