@@ -50,11 +50,11 @@ Mesh smoothed(const Mesh& mesh, const MeshEdges& edges, int iterations, const St
 // The curvature of the fine surface carried to its collapsed copy's triangles: a coarser
 // surface's dihedral angles and angle defects spread differently over its fewer triangles, and
 // the curvature histograms built from them lost half of shrec07's first tier the copy cost.
-TriangleCurvature fine_curvature(const PreparedSurface& prepared, const StopRequested& stop) {
+// `rough`: needs_smoothing of the fine surface, which the caller has asked already.
+TriangleCurvature fine_curvature(const PreparedSurface& prepared, bool rough,
+                                 const StopRequested& stop) {
   const Mesh& fine = prepared.posed;
-  const Mesh smooth = needs_smoothing(fine, prepared.posed_edges)
-                          ? smoothed(fine, prepared.posed_edges, kSmoothing, stop)
-                          : fine;
+  const Mesh smooth = rough ? smoothed(fine, prepared.posed_edges, kSmoothing, stop) : fine;
   const TriangleCurvature on_fine = triangle_curvature(smooth, prepared.posed_edges, stop);
   TriangleCurvature out;
   out.mean =
@@ -147,7 +147,8 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
   // triangles: a step diffuses over an edge, so the smoothing keeps its reach on the surface.
   Stopwatch part;
   Mesh smooth;
-  if (!prepared.proxy && needs_smoothing(prepared.posed, prepared.posed_edges)) {
+  const bool rough = !prepared.proxy && needs_smoothing(prepared.posed, prepared.posed_edges);
+  if (rough) {
     const double share = double(mesh.F.rows()) / double(prepared.posed.F.rows());
     smooth = smoothed(mesh, edges, std::max(1, int(std::lround(kSmoothing * share))), stop);
   } else if (!prepared.proxy) {
@@ -155,7 +156,7 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
   }
   rep.ms.smoothing = part.lap();
   const TriangleCurvature curvature =
-      prepared.coarse ? fine_curvature(prepared, stop)
+      prepared.coarse ? fine_curvature(prepared, rough, stop)
                       : triangle_curvature(prepared.proxy ? mesh : smooth, edges, stop);
   rep.ms.curvature = part.lap();
   double volume = 0;

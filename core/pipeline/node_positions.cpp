@@ -109,7 +109,10 @@ NodePositions node_positions(const Mesh& input, const BuildOptions& options,
              : prepared.coarse ? std::move(*prepared.coarse)
                                : std::move(prepared.posed);
   out.pose = prepared.pose;
-  const MeshEdges edges = mesh_edges(out.mesh.F);
+  // The edges prepare_surface found for the copy or the posed mesh; a proxy's are new.
+  const MeshEdges edges = prepared.proxy    ? mesh_edges(out.mesh.F)
+                          : prepared.coarse ? prepared.coarse_edges
+                                            : prepared.posed_edges;
   out.mu = normalised_mu(out.mesh, edges, options, stop);
   const SlicedSurface sliced = slice_intervals(out.mesh, out.mu, 1 << options.levels, stop);
   const ReebGraph reeb = reeb_levels(sliced, edges, options.levels, stop);
