@@ -108,18 +108,27 @@ done
 # Signal masks of the backend PID's threads: sets threads (how many besides the backend's own),
 # blocking (how many of those block SIGINT, the cancel signal) and main_blocks (1 when the
 # backend's own thread blocks it). Bit 1 of SigBlk is signal 2, SIGINT.
+# The backend's own thread blocks every signal for the few microseconds it takes to start a
+# worker (so the worker is born blocking them; a cancel sent then waits and is taken when the
+# mask is restored), and mu starts workers for every block of runs, so one read can land in
+# such a window: the backend's thread counts as blocking only if ten reads, 20 ms apart, all
+# find SIGINT blocked.
 signal_masks() {
-  local task mask
+  local task mask tries
   threads=0 blocking=0 main_blocks=1
   for task in /proc/"$1"/task/*; do
+    [[ ${task##*/} == "$1" ]] && continue
     mask=$(awk '/^SigBlk/ {print $2}' "$task/status" 2>/dev/null) || continue
     [[ -n "$mask" ]] || continue
-    if [[ ${task##*/} == "$1" ]]; then
-      main_blocks=$(( (0x$mask >> 1) & 1 ))
-    else
-      threads=$((threads + 1))
-      blocking=$((blocking + ((0x$mask >> 1) & 1)))
-    fi
+    threads=$((threads + 1))
+    blocking=$((blocking + ((0x$mask >> 1) & 1)))
+  done
+  for tries in 1 2 3 4 5 6 7 8 9 10; do
+    mask=$(awk '/^SigBlk/ {print $2}' /proc/"$1"/status 2>/dev/null) || break
+    [[ -n "$mask" ]] || break
+    main_blocks=$(( (0x$mask >> 1) & 1 ))
+    [[ $main_blocks == 0 ]] && break
+    sleep 0.02
   done
 }
 
