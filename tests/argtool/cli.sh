@@ -312,6 +312,18 @@ check "render --view upright --up writes the picture" bash -c \
    test -s '$work/up.png'"
 check "render --up +w is refused" bash -c \
   "! '$argtool' render '$cup' -o '$work/bad-up.png' --view upright --up +w 2> /dev/null"
+# render --texture: an OBJ's own colours are sampled from its image (the picture changes), and
+# an image that cannot be read is an error naming both files.
+check "render --texture colours the OBJ's picture from its image" bash -c \
+  "'$argtool' render '$work/square.obj' -o '$work/clay.png' --size 64 --surface colours > /dev/null &&
+   '$argtool' render '$work/square.obj' --texture '$work/red.tga' -o '$work/red.png' --size 64 \
+     --surface colours > /dev/null && ! cmp -s '$work/clay.png' '$work/red.png'"
+"$argtool" render "$work/square.obj" --texture "$work/bad.png" -o "$work/bad-render.png" \
+  > /dev/null 2> "$work/bad-render.err"
+status=$?
+check "render --texture with an image that cannot be read fails, naming both files" bash -c \
+  "test $status -ne 0 && grep -q 'square.obj with .*bad.png' '$work/bad-render.err' &&
+   test ! -e '$work/bad-render.png'"
 
 # 12. A GLB of two primitives with their own textures, one under a baseColorFactor: each face
 # maps its primitive's texture, both images are written, and the factor comes with its texture.

@@ -20,6 +20,7 @@ struct RenderArgs {
   std::string mesh, output, view = "front", shading = "smooth", title, surface = "mu";
   std::string colours_output;  // also the surface in its own colours, without the graph
   std::string up;              // the file axis that points up, for --view upright
+  std::string texture;         // an OBJ's texture image, for its own colours
   int level = 2, size = 512;
   bool no_legend = false, no_graph = false;
   arg::BuildOptions options;
@@ -50,7 +51,8 @@ int run_render(const RenderArgs& a) {
   if (a.level > a.options.levels)
     throw std::runtime_error("--level " + std::to_string(a.level) + " is finer than --levels " +
                              std::to_string(a.options.levels));
-  const arg::NodePositions model = arg::node_positions(argtool::read_mesh_file(a.mesh), a.options);
+  const arg::NodePositions model =
+      arg::node_positions(argtool::read_mesh_file(a.mesh, a.texture), a.options);
   if (a.view == "upright") {
     // The surface is posed: the file's axes are the pose's columns.
     ro.view = arg::upright_view(
@@ -109,6 +111,9 @@ const bool registered = argtool::register_command(
                      "model's own colours, clay where it has none)")
           ->check(CLI::IsMember({"mu", "colours"}))
           ->capture_default_str();
+      app.add_option("--texture", a->texture,
+                     "texture image for OBJ: the own colours are sampled from it, as the ARG's are")
+          ->check(CLI::ExistingFile);
       app.add_option("--colours-output", a->colours_output,
                      "a second PNG from the same surface: its own colours, no graph or legend");
       argtool::add_build_flags(app, a->options);

@@ -12,14 +12,18 @@
 
 namespace argtool {
 
-arg::Mesh read_mesh_file(const std::string& path) {
+arg::Mesh read_mesh_file(const std::string& path, const std::string& texture) {
   const std::string bytes = read_file_bytes(path);
   if (bytes.compare(0, 4, "ARGR") == 0)
     throw std::runtime_error(path + ": an ARG file has no surface to draw; give the mesh");
+  const std::string image = texture.empty() ? std::string() : read_file_bytes(texture);
+  arg::ReadOptions read;
+  read.texture = image;
   try {
-    return arg::read_mesh(bytes);
+    return arg::read_mesh(bytes, read);
   } catch (const arg::Error& e) {
-    throw std::runtime_error(path + ": " + e.what());
+    throw std::runtime_error((texture.empty() ? path : path + " with " + texture) + ": " +
+                             e.what());
   }
 }
 

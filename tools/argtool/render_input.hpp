@@ -10,8 +10,10 @@
 
 namespace argtool {
 
-// Reads a mesh file (format detected from the content); errors name the path.
-arg::Mesh read_mesh_file(const std::string& path);
+// Reads a mesh file (format detected from the content), its colours sampled from the texture
+// image at `texture` when one is given (an OBJ's, as `argtool build --texture` reads it);
+// errors name the path.
+arg::Mesh read_mesh_file(const std::string& path, const std::string& texture = {});
 
 struct RenderInput {
   std::string path;
