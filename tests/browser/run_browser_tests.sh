@@ -72,11 +72,30 @@ start_browser() {
 }
 
 upload_files_pytest() {
-  (cd tests/browser && PYTHONDONTWRITEBYTECODE=1 "$python" -m pytest -q -p no:cacheprovider test_upload_files.py)
+  (cd tests/browser && PYTHONDONTWRITEBYTECODE=1 "$python" -m pytest -q -p no:cacheprovider \
+     test_upload_files.py test_demo_catalogue.py)
+}
+
+# A folder with an OBJ of two materials, as `make demo MODELS=DIR` loads it, in a database of its
+# own: the texture colours the ARG and the thumbnail, each material's image reaches the 3D view.
+textured_folder() {
+  local dir=$work/textured
+  rm -rf "$dir" && mkdir -p "$dir/models" &&
+    "$python" tests/browser/textured_folder.py write "$dir/models" &&
+    "$python" tools/demo/catalogue.py "$dir/models" --textures "$dir/textures.csv" >"$dir/catalogue.csv" &&
+    PGOPTIONS='-c client_min_messages=warning' psql -X -q -d postgres -v ON_ERROR_STOP=1 \
+      -c 'DROP DATABASE IF EXISTS arg_browser_textured' -c 'CREATE DATABASE arg_browser_textured' &&
+    PGDATABASE=arg_browser_textured psql -X -q -v ON_ERROR_STOP=1 -v mode=user -v dir="$dir/models" \
+      -v script="$dir/import.sql" -v every=1000 -v textures="$dir/textures.csv" \
+      -f tools/demo/load.sql <"$dir/catalogue.csv" &&
+    PGDATABASE=arg_browser_textured "$python" tools/browser/thumbnails.py --argtool "$build/argtool" &&
+    PGDATABASE=arg_browser_textured "$python" tests/browser/textured_folder.py check "$build/argtool"
 }
 
 step "what a search by upload accepts: one mesh, an OBJ with its MTL and images, a zip (pytest)" \
   upload_files_pytest
+step "an OBJ folder loads with its texture and each material's (catalogue.py, load.sql, thumbnails)" \
+  textured_folder
 step "a database for the browser's catalogue" make_database
 step "the sample catalogue loads as the demo loads it (tools/demo/load.sql)" load_catalogue
 step "every model gets PNG thumbnails in the table, own colours and mu (argtool render)" every_thumbnail

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any, Dict, List, Mapping
+from typing import Any, Dict, List, Mapping, Optional
 
 import psycopg
 from fastapi import FastAPI, Request
@@ -146,7 +146,7 @@ def model_view(model_id: int) -> viewdata.View:
     if row is None:
         raise viewdata.ViewUnavailable(f"there is no model {model_id} in the catalogue", 404)
     return viewdata.convert(model_id, row["file"], row["mesh"], row["triangles"], row["texture"],
-                            row["options"], row["up"])
+                            row["options"], row["up"], row["materials"])
 
 
 def unavailable(why: viewdata.ViewUnavailable) -> JSONResponse:
@@ -285,11 +285,22 @@ def upload_form(request: Request) -> HTMLResponse:
         return page(request, "upload.html", **ranking_form(conn, {}))
 
 
-def rank_upload(data: bytes, params: Dict[str, str]) -> "tuple[Dict[str, Any], List[Dict[str, Any]]]":
-    """The upload's ARG built by the server (the bytes as a bind parameter), then the ranking."""
+def rank_upload(data: bytes, texture: Optional[bytes], params: Dict[str, str],
+                notes: List[str]) -> "tuple[Dict[str, Any], List[Dict[str, Any]]]":
+    """The upload's ARG built by the server (the bytes as a bind parameter; an OBJ's colours from
+    its texture, as the demo builds the catalogue's), then the ranking. A texture the server
+    cannot read is left out, with its reason in NOTES, as the demo's loader leaves it out."""
     with catalogue.connect() as conn:
         form = ranking_form(conn, params)
-        query = pgarg.build(conn, data)
+        query = None
+        if texture is not None:
+            try:
+                query = pgarg.build(conn, data, texture=texture)
+            except psycopg.errors.DataError as error:
+                notes.append("searched with the mesh's shape alone: the server cannot read its texture ("
+                             f"{error.diag.message_primary or error})")
+        if query is None:
+            query = pgarg.build(conn, data)
         return form, catalogue.ranked(conn, query, form["k"], form["filters"])
 
 
@@ -318,8 +329,7 @@ async def upload(request: Request) -> HTMLResponse:
     sent = await read_upload(form_data)
     params = {key: value for key, value in form_data.items() if isinstance(value, str)}
     try:
-        # The ARG of the mesh alone, as the catalogue's are built: a texture is for the view.
-        form, rows = await run_in_threadpool(rank_upload, sent.mesh, params)
+        form, rows = await run_in_threadpool(rank_upload, sent.mesh, sent.texture, params, sent.notes)
     except psycopg.Error as error:
         raise errors.ServerRefused(sent.name, error) from error
     # The upload in 3D beside its ranking (its view.json is made when the page asks for it).

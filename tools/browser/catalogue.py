@@ -126,9 +126,19 @@ def has_up(conn: psycopg.Connection[Any]) -> bool:
                         (TABLE,)).fetchone()[0]
 
 
+def material_textures(conn: psycopg.Connection[Any], model_id: int) -> Dict[str, bytes]:
+    """Each material's texture image of an object (an OBJ's, by usemtl name) from the table
+    object_textures that tools/demo/load.sql makes; none when the database has no such table."""
+    if conn.execute("SELECT to_regclass('object_textures') IS NULL").fetchone()[0]:
+        return {}
+    rows = conn.execute("SELECT material, image FROM object_textures WHERE object_id = %s",
+                        (model_id,)).fetchall()
+    return {material: bytes(image) for material, image in rows}
+
+
 def stored_mesh(conn: psycopg.Connection[Any], model_id: int) -> Optional[Dict[str, Any]]:
     """The mesh as stored, its file name, its number of triangles, the texture stored beside it
-    (an OBJ's), the build options of its stored ARG (a picture's graph must be that one) and the
+    (an OBJ's) and each of its materials' (`materials`), the build options of its stored ARG (a picture's graph must be that one) and the
     file's up axis from the catalogue ('' when none); None when there is no such id."""
     statement = sql.SQL(
         "SELECT file, mesh, texture, (arg_info(descr)->>'triangles')::bigint AS triangles, "
@@ -140,6 +150,8 @@ def stored_mesh(conn: psycopg.Connection[Any], model_id: int) -> Optional[Dict[s
     for column in ("mesh", "texture"):
         if row is not None and row[column] is not None:
             row[column] = bytes(row[column])
+    if row is not None:
+        row["materials"] = material_textures(conn, model_id)
     return row
 
 

@@ -31,13 +31,18 @@ def render_one(argtool: str, size: int, model_id: int, scratch: Path, timeout: f
     with psycopg.connect(autocommit=True) as conn:
         # The catalogue's up axis of the file, where the table keeps one (tools/demo/load.sql).
         up = "coalesce(up, '')" if has_up(conn) else "''"
-        row = conn.execute(f"SELECT file, mesh, {up} FROM {TABLE} WHERE id = %s", (model_id,)).fetchone()
+        row = conn.execute(f"SELECT file, mesh, texture, {up} FROM {TABLE} WHERE id = %s",
+                           (model_id,)).fetchone()
         if row is None:
             return model_id, "gone from the table"
-        file, mesh, up = row
+        file, mesh, texture, up = row
         # argtool reads the format from the file name's suffix.
         mesh_path = scratch / f"{model_id}{Path(file).suffix.lower() or '.off'}"
         mesh_path.write_bytes(bytes(mesh))
+        # An OBJ's texture, stored beside it: the picture in its own colours samples it, as its ARG does.
+        texture_path = scratch / f"{model_id}-texture"
+        if texture is not None:
+            texture_path.write_bytes(bytes(texture))
         colours_path = scratch / f"{model_id}-colours.png"
         mu_path = scratch / f"{model_id}-mu.png"
         try:
@@ -48,12 +53,13 @@ def render_one(argtool: str, size: int, model_id: int, scratch: Path, timeout: f
             done = subprocess.run(
                 [argtool, "render", str(mesh_path), "-o", str(mu_path), "--colours-output", str(colours_path),
                  "--size", str(size), "--view", "upright", "--no-legend", "--title", " "]
-                + ([f"--up={up}"] if up else []),
+                + ([f"--up={up}"] if up else []) + (["--texture", str(texture_path)] if texture is not None else []),
                 capture_output=True, text=True, timeout=timeout)
         except subprocess.TimeoutExpired:
             return model_id, f"argtool render took more than {timeout:.0f} s"
         finally:
             mesh_path.unlink(missing_ok=True)
+            texture_path.unlink(missing_ok=True)
         if done.returncode != 0:
             lines = (done.stderr.strip() or done.stdout.strip() or f"exit status {done.returncode}").splitlines()
             # An option argtool refuses (a stored up that is not an axis) is followed by a hint line.

@@ -67,16 +67,17 @@ _lock = threading.Lock()
 
 
 def convert(model_id: int, file: str, mesh: Optional[bytes], triangles: Optional[int],
-            texture: Optional[bytes] = None, options: str = "", up: str = "") -> View:
-    """The view of one stored mesh (with the texture stored beside it, for OBJ), its graph built
-    with the stored ARG's build OPTIONS, starting with the file axis UP up when the catalogue
-    gives one; raises ViewUnavailable with the reason."""
+            texture: Optional[bytes] = None, options: str = "", up: str = "",
+            materials: Optional[Dict[str, bytes]] = None) -> View:
+    """The view of one stored mesh (with the texture stored beside it, and each material's
+    texture, for OBJ), its graph built with the stored ARG's build OPTIONS, starting with the
+    file axis UP up when the catalogue gives one; raises ViewUnavailable with the reason."""
     if mesh is None:
         raise ViewUnavailable(f"model {model_id} has no mesh stored: there is nothing to show in 3D", 404)
     if triangles is not None and triangles > MAX_TRIANGLES:
         raise ViewUnavailable(f"model {model_id} is too large to display in 3D: {triangles:,} triangles, "
                               f"more than {MAX_TRIANGLES:,}", 413)
-    return convert_bytes(f"model {model_id}", file, mesh, texture, options, up)
+    return convert_bytes(f"model {model_id}", file, mesh, texture, options, up, materials)
 
 
 def materials_digest(materials: Optional[Dict[str, bytes]]) -> str:

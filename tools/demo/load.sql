@@ -2,12 +2,13 @@
 -- stdin: the catalogue CSV (model_id,path,class,inventory_no,title,artist,period,material,
 -- licence,up).
 -- Variables: mode (sample|user), dir (base of relative paths), script (a scratch file),
--- every (a progress line per this many models).
+-- every (a progress line per this many models); textures (optional): a CSV of the OBJ files'
+-- texture images, model_id,material,path, as tools/demo/catalogue.py --textures writes it.
 -- The client reads the mesh files (\lo_import) and sends them: the server never reads the
 -- project's files, it runs as another user.
 
 SET client_min_messages = warning;
-DROP TABLE IF EXISTS objects;
+DROP TABLE IF EXISTS object_textures, objects;
 DROP EXTENSION IF EXISTS arg CASCADE;
 CREATE EXTENSION arg CASCADE;
 
@@ -27,9 +28,19 @@ CREATE TABLE objects (
   sha256       text UNIQUE,          -- how the Python client's loader knows a file it loaded
   mesh         bytea,
   texture      bytea,                -- for OBJ files that keep it outside
-  descr        arg GENERATED ALWAYS AS (arg_build(mesh)) STORED,
+  descr        arg GENERATED ALWAYS AS (CASE WHEN texture IS NULL THEN arg_build(mesh)
+                                             ELSE arg_build(mesh, texture) END) STORED,
   thumbnail    bytea,                -- PNGs for the catalogue browser (tools/browser/thumbnails.py):
   thumbnail_mu bytea                 -- the object in its own colours, and coloured by mu
+);
+
+-- Each texture an OBJ's materials use (usemtl, map_Kd), for the browser's 3D view; the one in
+-- objects.texture colours the ARG and the pictures.
+CREATE TABLE object_textures (
+  object_id integer NOT NULL REFERENCES objects ON DELETE CASCADE,
+  material  text NOT NULL,
+  image     bytea NOT NULL,
+  PRIMARY KEY (object_id, material)
 );
 
 CREATE TEMP TABLE catalogue (
@@ -40,34 +51,80 @@ CREATE TEMP TABLE catalogue (
 
 SELECT count(*) AS total FROM catalogue \gset
 
+-- \copy expands no variables: its line is written to the scratch script and run from there (its
+-- file name quoted as \copy reads it: quotes doubled, backslashes as they are).
+CREATE TEMP TABLE textures (model_id text, material text, path text);
+\if :{?textures}
+\pset tuples_only on
+\pset format unaligned
+SELECT format('\copy textures (model_id, material, path) FROM %s WITH (FORMAT csv, HEADER true, FORCE_NOT_NULL (material))',
+              '''' || replace(:'textures', '''', '''''') || '''') \g :script
+\pset tuples_only off
+\pset format aligned
+\i :script
+\endif
+
 -- One block per model: import the file client-side, insert it (arg_build runs in the generated
--- column), drop the large object. User models that fail to build are skipped with their error.
+-- column), drop the large object. User models that fail to build are skipped with their error;
+-- one that fails with its texture (an image that does not decode) is loaded again without it.
+-- psql meta-command quoting: backslashes and quotes doubled inside single quotes.
+CREATE FUNCTION pg_temp.quoted(text) RETURNS text LANGUAGE sql IMMUTABLE
+  AS $$ SELECT '''' || replace(replace($1, E'\\', E'\\\\'), '''', '''''') || '''' $$;
 \pset tuples_only on
 \pset format unaligned
 \o :script
 SELECT format(E'\\lo_import %s\n'
               '\\set lo :LASTOID\n'
-              'INSERT INTO objects (id, model_id, inventory_no, title, class, artist, period, material, licence, up, file, mesh)\n'
-              '  SELECT n, model_id, nullif(inventory_no, ''''), title, class, artist, period, material, licence,\n'
-              '         nullif(up, ''''), %L, lo_get(:lo)\n'
-              '  FROM catalogue WHERE n = %s;\n'
               '%s'
+              'INSERT INTO objects (id, model_id, inventory_no, title, class, artist, period, material, licence, up, file, mesh%s)\n'
+              '  SELECT n, model_id, nullif(inventory_no, ''''), title, class, artist, period, material, licence,\n'
+              '         nullif(up, ''''), %L, lo_get(:lo)%s\n'
+              '  FROM catalogue WHERE n = %s;\n'
+              '%s%s%s'
               'SELECT lo_unlink(:lo) \\g /dev/null\n'
               '%s',
-              -- psql meta-command quoting: backslashes and quotes doubled inside single quotes
-              '''' || replace(replace(file, E'\\', E'\\\\'), '''', '''''') || '''',
-              file_name, n,
-              CASE WHEN :'mode' = 'user' THEN
-                format(E'\\if :ERROR\n\\echo %s\n\\endif\n',
-                       '''  skipped ' || replace(replace(file_name, E'\\', E'\\\\'), '''', '''''')
-                       || ':'' :LAST_ERROR_MESSAGE')
+              pg_temp.quoted(file),
+              CASE WHEN texture IS NOT NULL THEN
+                format(E'\\lo_import %s\n\\set tlo :LASTOID\n', pg_temp.quoted(texture))
               ELSE '' END,
+              CASE WHEN texture IS NOT NULL THEN ', texture' ELSE '' END,
+              file_name,
+              CASE WHEN texture IS NOT NULL THEN ', lo_get(:tlo)' ELSE '' END,
+              n,
+              CASE WHEN texture IS NOT NULL AND :'mode' = 'user' THEN
+                format(E'\\if :ERROR\n'
+                       '\\echo %s :LAST_ERROR_MESSAGE\n'
+                       'INSERT INTO objects (id, model_id, inventory_no, title, class, artist, period, material, licence, up, file, mesh)\n'
+                       '  SELECT n, model_id, nullif(inventory_no, ''''), title, class, artist, period, material, licence,\n'
+                       '         nullif(up, ''''), %L, lo_get(:lo)\n'
+                       '  FROM catalogue WHERE n = %s;\n'
+                       '\\endif\n',
+                       pg_temp.quoted('  ' || file_name || ' loaded without its texture ' || texture_name || ':'),
+                       file_name, n)
+              ELSE '' END,
+              CASE WHEN :'mode' = 'user' THEN
+                format(E'\\if :ERROR\n\\echo %s :LAST_ERROR_MESSAGE\n\\endif\n',
+                       pg_temp.quoted('  skipped ' || file_name || ':'))
+              ELSE '' END,
+              CASE WHEN texture IS NOT NULL THEN E'SELECT lo_unlink(:tlo) \\g /dev/null\n' ELSE '' END
+              || coalesce((SELECT string_agg(
+                    format(E'\\lo_import %s\n'
+                           '\\set mlo :LASTOID\n'
+                           'INSERT INTO object_textures (object_id, material, image)\n'
+                           '  SELECT id, %L, lo_get(:mlo) FROM objects WHERE id = %s;\n'
+                           'SELECT lo_unlink(:mlo) \\g /dev/null\n',
+                           pg_temp.quoted(t.path), t.material, n), '' ORDER BY t.material)
+                           FROM textures t WHERE t.model_id = c.model_id AND t.material <> ''), ''),
               CASE WHEN n % :every = 0 OR n = :total THEN
                 format(E'\\echo ''  %s/%s models done''\n', n, :total)
               ELSE '' END)
-FROM (SELECT n,
+FROM (SELECT n, model_id,
              CASE WHEN path LIKE '/%' THEN path ELSE :'dir' || '/' || path END AS file,
-             regexp_replace(path, '^.*/', '') AS file_name
+             regexp_replace(path, '^.*/', '') AS file_name,
+             (SELECT min(t.path) FROM textures t WHERE t.model_id = catalogue.model_id
+                AND t.material = '') AS texture,
+             (SELECT regexp_replace(min(t.path), '^.*/', '') FROM textures t
+               WHERE t.model_id = catalogue.model_id AND t.material = '') AS texture_name
       FROM catalogue) AS c
 ORDER BY n;
 \o

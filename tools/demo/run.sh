@@ -26,6 +26,7 @@ work=$(cd "$work" && pwd -P)
 
 # The catalogue: CSV with header model_id,path,class,inventory_no,title,artist,period,material,
 # licence.
+textures=()  # the OBJ files' texture images (tools/demo/catalogue.py --textures), for a folder
 if [[ -z "$models_dir" ]]; then
   mode=sample
   rm -rf "$work/models"
@@ -38,7 +39,8 @@ else
   [[ -d "$models_dir" ]] || { echo "demo: MODELS=$models_dir is not a directory" >&2; exit 1; }
   base=$(cd "$models_dir" && pwd -P)
   catalogue=$work/user_catalogue.csv
-  "$python" tools/demo/catalogue.py "$base" >"$catalogue" ||
+  textures=(-v textures="$work/user_textures.csv")
+  "$python" tools/demo/catalogue.py "$base" --textures "$work/user_textures.csv" >"$catalogue" ||
     { echo "demo: no .off .obj .ply .stl or .glb files under $base" >&2; exit 1; }
   echo "demo: $(($(wc -l <"$catalogue") - 1)) mesh files under $base"
 fi
@@ -54,7 +56,7 @@ echo "demo: loading the catalogue into table objects (database museum)"
 # of the error goes to a log.
 if [[ $mode == user ]]; then exec 3>"$work/load-errors.log"; else exec 3>&2; fi
 psql -X -q -d museum -v ON_ERROR_STOP=1 -v mode="$mode" -v dir="$base" \
-  -v script="$work/import.sql" -v every="${DEMO_PROGRESS_EVERY:-10}" \
+  -v script="$work/import.sql" -v every="${DEMO_PROGRESS_EVERY:-10}" "${textures[@]}" \
   -f tools/demo/load.sql <"$catalogue" 2>&3 || {
   [[ $mode == user ]] && tail -n 5 "$work/load-errors.log" >&2
   exit 1

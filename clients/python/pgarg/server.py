@@ -12,14 +12,19 @@ from .value import Arg
 Mesh = Union[bytes, bytearray, memoryview]
 
 
-def build(conn: psycopg.Connection[Any], mesh: Mesh, options: str = "") -> Arg:
-    """The server's ``arg_build(mesh, options)`` of mesh bytes (OFF, OBJ, PLY, STL or GLB).
+def build(conn: psycopg.Connection[Any], mesh: Mesh, options: str = "", texture: "Mesh | None" = None) -> Arg:
+    """The server's ``arg_build(mesh, options)`` of mesh bytes (OFF, OBJ, PLY, STL or GLB); with
+    ``texture`` (the image an OBJ keeps outside it), ``arg_build(mesh, texture, options)``, whose
+    colours are sampled from it.
 
     A mesh the server refuses raises the psycopg error class of its SQLSTATE (say
     psycopg.errors.InvalidTextRepresentation for 22P02); ``error.sqlstate`` and
     ``error.diag.message_primary`` say what and where. Needs register_arg(conn) first.
     """
-    row = conn.execute("SELECT arg_build(%b, %s)", (bytes(mesh), options)).fetchone()
+    if texture is None:
+        row = conn.execute("SELECT arg_build(%b, %s)", (bytes(mesh), options)).fetchone()
+    else:
+        row = conn.execute("SELECT arg_build(%b, %b, %s)", (bytes(mesh), bytes(texture), options)).fetchone()
     assert row is not None
     return row[0]
 

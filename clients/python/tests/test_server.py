@@ -18,6 +18,21 @@ def test_build_returns_what_the_server_stores(conn: psycopg.Connection[Any], mes
     assert pgarg.build(conn, meshes["torus_1.off"], "levels=3") != built
 
 
+def test_build_with_a_texture_samples_its_colours(conn: psycopg.Connection[Any], meshes: Dict[str, bytes]) -> None:
+    # A 2 x 1 true-colour TGA: red and blue; the OBJ's texture coordinates pick the blue one.
+    tga = bytes([0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 1, 0, 24, 0]) + bytes([0, 0, 255, 255, 0, 0])
+    obj = b"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0.75 0.5\n" \
+          b"f 1/1 3/1 2/1\nf 1/1 2/1 4/1\nf 1/1 4/1 3/1\nf 2/1 3/1 4/1\n"
+    plain = pgarg.build(conn, obj)
+    coloured = pgarg.build(conn, obj, texture=tga)
+    assert pgarg.info(conn, plain)["has_colour"] is False
+    assert pgarg.info(conn, coloured)["has_colour"] is True
+    assert coloured == conn.execute("SELECT arg_build(%b, %b)", (obj, tga)).fetchone()[0]
+    with pytest.raises(psycopg.errors.DataError):
+        pgarg.build(conn, obj, texture=b"not an image")
+    assert conn.execute("SELECT 1").fetchone()[0] == 1
+
+
 @pytest.mark.parametrize("mesh, names", [(b"OFF\n3 1 0\n0 0 0\n", "OFF: line 2"),
                                          (b"solid nothing here", "STL: line 1"),
                                          (b"no mesh at all", "unrecognised mesh format")])
