@@ -114,16 +114,22 @@ done
 # such a window: the backend's thread counts as blocking only if ten reads, 20 ms apart, all
 # find SIGINT blocked.
 signal_masks() {
-  local task mask tries
+  local task mask
   threads=0 blocking=0 main_blocks=1
+  local state
   for task in /proc/"$1"/task/*; do
     [[ ${task##*/} == "$1" ]] && continue
     mask=$(awk '/^SigBlk/ {print $2}' "$task/status" 2>/dev/null) || continue
     [[ -n "$mask" ]] || continue
+    # As in watch_workers: a thread read as it exits may show its signal state released.
+    if (( ((0x$mask >> 1) & 1) == 0 )); then
+      state=$(awk '/^State/ {print $2}' "$task/status" 2>/dev/null) || continue
+      [[ -n $state && $state != [XZ]* ]] || continue
+    fi
     threads=$((threads + 1))
     blocking=$((blocking + ((0x$mask >> 1) & 1)))
   done
-  for tries in 1 2 3 4 5 6 7 8 9 10; do
+  for _ in 1 2 3 4 5 6 7 8 9 10; do
     mask=$(awk '/^SigBlk/ {print $2}' /proc/"$1"/status 2>/dev/null) || break
     [[ -n "$mask" ]] || break
     main_blocks=$(( (0x$mask >> 1) & 1 ))
