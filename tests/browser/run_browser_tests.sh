@@ -6,8 +6,8 @@
 #   tools/pg/cluster.sh start build/pg-test && source build/pg-test/env && tests/browser/run_browser_tests.sh
 #
 # Needs PGHOST/PGPORT/PGUSER of a running cluster with the extension installed, and the build
-# (BUILD_DIR, default build: argtool). Uses the database arg_browser (made anew) and
-# $BUILD_DIR/test-browser; stops the browser it started, whatever happens.
+# (BUILD_DIR, default build: argtool). Uses the databases arg_browser and arg_browser_textured
+# (made anew) and $BUILD_DIR/test-browser; stops the browser it started, whatever happens.
 # shellcheck disable=SC2317  # the set-up functions below are called through step's "$@"
 set -uo pipefail
 

@@ -72,3 +72,30 @@ def test_what_is_missing_or_outside_the_folder_is_reported_not_used(tmp_path: Pa
     assert "names the MTL 'gone.mtl', which is not there" in said
     assert "material 'a' the texture '../secret.png', which is not there" in said
     assert "material 'b' the texture 'missing.png', which is not there" in said
+
+
+def test_a_link_out_of_the_folder_and_a_name_of_two_lines_are_not_used(tmp_path: Path) -> None:
+    models = tmp_path / "models"
+    write(tmp_path / "outside" / "secret.png", PNG)
+    write(models / "lone" / "a.obj", TRIANGLE + "f 1/1 2/2 3/3\n")
+    (models / "lone" / "a.png").symlink_to(tmp_path / "outside" / "secret.png")
+    write(models / "two" / "b.obj", TRIANGLE + "f 1/1 2/2 3/3\n")
+    write(models / "two" / "b\nc.png", PNG)
+    write(models / "two\nlines.obj", TRIANGLE + "f 1 2 3\n")
+    rows, textures, said = catalogue(models, tmp_path)
+    assert sorted(r[0] for r in rows[1:]) == ["lone/a", "two/b"] and textures == []
+    assert "'" + str(models / "two\nlines.obj").replace("\n", "\\n") + "'" in said
+
+
+def test_an_mtl_that_is_not_there_leaves_the_one_image_beside_the_obj(tmp_path: Path) -> None:
+    models = tmp_path / "models"
+    write(models / "bowl.obj", "mtllib bowl.mtl\n" + TRIANGLE + "usemtl glaze\nf 1/1 2/2 3/3\n")
+    write(models / "bowl texture.png", PNG)
+    # A name with a backslash, as Linux allows, is found as it is written.
+    write(models / "cup" / "cup.obj", "mtllib cup.mtl\n" + TRIANGLE + "usemtl a\nf 1/1 2/2 3/3\n")
+    write(models / "cup" / "cup.mtl", "newmtl a\nmap_Kd odd\\name.png\n")
+    write(models / "cup" / "odd\\name.png", PNG)
+    _, textures, said = catalogue(models, tmp_path)
+    assert textures == [("bowl", "", "bowl texture.png"), ("cup/cup", "", "cup/odd\\name.png"),
+                        ("cup/cup", "a", "cup/odd\\name.png")]
+    assert "names the MTL 'bowl.mtl', which is not there" in said

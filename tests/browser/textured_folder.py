@@ -51,6 +51,13 @@ def check(argtool: str) -> int:
     view = json.loads(viewdata.convert(model_id, row["file"], row["mesh"], row["triangles"], row["texture"],
                                        row["options"], row["up"], row["materials"]).data)
     found["view's images"] = len(view.get("images") or []) == 2
+    # A search by upload with an image the server cannot read searches by the mesh alone, saying so.
+    import app
+
+    notes: list = []
+    _, rows = app.rank_upload(bytes(row["mesh"]), b"not an image", {}, notes)
+    found["upload without its texture"] = (len(rows) == 1 and len(notes) == 1
+                                           and "cannot build ARG: image: not a PNG" in notes[0])
     print(found)
     return 0 if all(found.values()) else 1
 

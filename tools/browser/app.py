@@ -285,6 +285,10 @@ def upload_form(request: Request) -> HTMLResponse:
         return page(request, "upload.html", **ranking_form(conn, {}))
 
 
+# How the server begins an error that is its texture's, not its mesh's (core/io/decode_image).
+IMAGE_ERROR = "cannot build ARG: image: "
+
+
 def rank_upload(data: bytes, texture: Optional[bytes], params: Dict[str, str],
                 notes: List[str]) -> "tuple[Dict[str, Any], List[Dict[str, Any]]]":
     """The upload's ARG built by the server (the bytes as a bind parameter; an OBJ's colours from
@@ -296,9 +300,13 @@ def rank_upload(data: bytes, texture: Optional[bytes], params: Dict[str, str],
         if texture is not None:
             try:
                 query = pgarg.build(conn, data, texture=texture)
-            except psycopg.errors.DataError as error:
-                notes.append("searched with the mesh's shape alone: the server cannot read its texture ("
-                             f"{error.diag.message_primary or error})")
+            except (psycopg.errors.DataError, psycopg.errors.ProgramLimitExceeded) as error:
+                # The image's fault (one that does not decode, or over a cap: 22xxx or 54000)
+                # leaves it out; the mesh's goes to the page as any refused upload does.
+                message = error.diag.message_primary or str(error)
+                if not message.startswith(IMAGE_ERROR):
+                    raise
+                notes.append(f"searched with the mesh's shape alone: the server cannot read its texture ({message})")
         if query is None:
             query = pgarg.build(conn, data)
         return form, catalogue.ranked(conn, query, form["k"], form["filters"])

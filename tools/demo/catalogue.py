@@ -60,37 +60,63 @@ def under(base: pathlib.Path, path: pathlib.Path) -> bool:
     return path == base or base in path.parents
 
 
+def usable(path: pathlib.Path) -> bool:
+    """Whether a file's name can go into the CSV and a psql script: UTF-8, one line."""
+    text = str(path)
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        return False
+    return "\n" not in text and "\r" not in text
+
+
+def found_under(base: pathlib.Path, path: pathlib.Path) -> Optional[pathlib.Path]:
+    """PATH resolved (links followed) if it is a usable file under BASE, else None."""
+    try:
+        real = path.resolve()
+        return real if real.is_file() and under(base, real) and usable(real) else None
+    except (OSError, ValueError):  # a name with a NUL, a loop of links
+        return None
+
+
 def named_file(base: pathlib.Path, folders: List[pathlib.Path], name: str) -> Optional[pathlib.Path]:
-    """The file an OBJ or MTL names: as given, relative to the first folder, else the file of that
-    last part (case ignored) in any of the folders; None when there is none under BASE. An MTL
-    written elsewhere often names its images by an absolute path of the machine it came from."""
-    given = name.strip().replace("\\", "/")
-    candidates = [(folders[0] / given).resolve()] if given and not given.startswith("/") else []
+    """The file an OBJ or MTL names: as given, relative to the first folder (its backslashes as
+    they are, then as folder separators), else the file of that last part (case ignored) in any
+    of the folders; None when there is none under BASE. An MTL written elsewhere often names its
+    images by an absolute path of the machine it came from."""
+    given = name.strip()
+    candidates = [folders[0] / g for g in dict.fromkeys([given, given.replace("\\", "/")])
+                  if g and not g.startswith("/")]
     wanted = upload_files.last_part(name).lower()
     for folder in folders:
         if folder.is_dir():
             candidates += sorted(p for p in folder.iterdir() if p.name.lower() == wanted)
     for path in candidates:
-        if path.is_file() and under(base, path.resolve()):
-            return path.resolve()
+        real = found_under(base, path)
+        if real is not None:
+            return real
     return None
 
 
 def obj_textures(base: pathlib.Path, obj: pathlib.Path, meshes_here: int,
                  images_here: List[pathlib.Path]) -> Tuple[Optional[pathlib.Path], Dict[str, pathlib.Path]]:
     """The image that colours OBJ (the first material it uses with a texture found, else any
-    material's) and each material it uses with its image, as a search by upload chooses them."""
+    material's) and each material it uses with its image, as a search by upload chooses them:
+    without an MTL found, the one image beside it when no other mesh shares its folder."""
     libraries, used = upload_files.obj_material_names(obj.read_bytes())
-    if not libraries:
-        lone = images_here[0] if meshes_here == 1 and len(images_here) == 1 else None
-        return lone, {}
-    found: Dict[str, pathlib.Path] = {}
+    mtls = []
     for library in libraries:
         mtl = named_file(base, [obj.parent], library)
         if mtl is None:
             print(f"demo: {obj.relative_to(base)} names the MTL {library!r}, which is not there",
                   file=sys.stderr)
-            continue
+        else:
+            mtls.append(mtl)
+    if not mtls:
+        lone = found_under(base, images_here[0]) if meshes_here == 1 and len(images_here) == 1 else None
+        return lone, {}
+    found: Dict[str, pathlib.Path] = {}
+    for mtl in mtls:
         for material, image_name in upload_files.materials(mtl.read_bytes()).items():
             image = named_file(base, [mtl.parent, obj.parent], image_name)
             if image is None:
@@ -135,8 +161,12 @@ def main() -> int:
     parser.add_argument("--textures", help="where to write the OBJ files' texture images, as CSV")
     args = parser.parse_args()
     base = pathlib.Path(args.dir).resolve()
-    files = sorted(p for p in base.rglob("*") if p.is_file() and p.suffix.lower() in EXTENSIONS
-                   and "\n" not in str(p))
+    files = sorted(p for p in base.rglob("*") if p.is_file() and p.suffix.lower() in EXTENSIONS)
+    for path in files:
+        if not usable(path):
+            print(f"demo: {ascii(str(path))}: a file name that is not one line of UTF-8 is left out",
+                  file=sys.stderr)
+    files = [p for p in files if usable(p)]
     known = {}
     listed = base / "catalogue.csv"
     if listed.is_file():

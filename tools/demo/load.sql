@@ -62,57 +62,90 @@ SELECT format('\copy textures (model_id, material, path) FROM %s WITH (FORMAT cs
 \pset tuples_only off
 \pset format aligned
 \i :script
+-- Relative paths are relative to dir, as the catalogue's are.
+UPDATE textures SET path = :'dir' || '/' || path WHERE path NOT LIKE '/%';
 \endif
 
 -- One block per model: import the file client-side, insert it (arg_build runs in the generated
--- column), drop the large object. User models that fail to build are skipped with their error;
--- one that fails with its texture (an image that does not decode) is loaded again without it.
+-- column), drop the large object. User models that fail to build are skipped with their error.
+-- A model with a texture imports it too; if the image is what the server refuses (an error
+-- that begins "cannot build ARG: image: ") or cannot be imported (then LASTOID is still the
+-- mesh's), the model is loaded without it and the reason is printed. (A sample catalogue has
+-- no textures; with ON_ERROR_STOP, as the sample loads, any error ends the load.)
 -- psql meta-command quoting: backslashes and quotes doubled inside single quotes.
 CREATE FUNCTION pg_temp.quoted(text) RETURNS text LANGUAGE sql IMMUTABLE
   AS $$ SELECT '''' || replace(replace($1, E'\\', E'\\\\'), '''', '''''') || '''' $$;
+CREATE FUNCTION pg_temp.insert(n integer, file_name text, textured boolean) RETURNS text
+  LANGUAGE sql IMMUTABLE AS $$
+  SELECT format(E'INSERT INTO objects (id, model_id, inventory_no, title, class, artist, period, material, licence, up, file, mesh%s)\n'
+                '  SELECT n, model_id, nullif(inventory_no, ''''), title, class, artist, period, material, licence,\n'
+                '         nullif(up, ''''), %L, lo_get(:lo)%s\n'
+                '  FROM catalogue WHERE n = %s;\n',
+                CASE WHEN textured THEN ', texture' ELSE '' END, file_name,
+                CASE WHEN textured THEN ', lo_get(:tlo)' ELSE '' END, n)
+$$;
+CREATE FUNCTION pg_temp.skipped(file_name text, user_mode boolean) RETURNS text
+  LANGUAGE sql IMMUTABLE AS $$
+  SELECT CASE WHEN user_mode THEN
+    format(E'\\if :ERROR\n\\echo %s :LAST_ERROR_MESSAGE\n\\endif\n',
+           pg_temp.quoted('  skipped ' || file_name || ':'))
+  ELSE '' END
+$$;
 \pset tuples_only on
 \pset format unaligned
 \o :script
 SELECT format(E'\\lo_import %s\n'
               '\\set lo :LASTOID\n'
               '%s'
-              'INSERT INTO objects (id, model_id, inventory_no, title, class, artist, period, material, licence, up, file, mesh%s)\n'
-              '  SELECT n, model_id, nullif(inventory_no, ''''), title, class, artist, period, material, licence,\n'
-              '         nullif(up, ''''), %L, lo_get(:lo)%s\n'
-              '  FROM catalogue WHERE n = %s;\n'
-              '%s%s%s'
               'SELECT lo_unlink(:lo) \\g /dev/null\n'
-              '%s',
+              '%s%s',
               pg_temp.quoted(file),
-              CASE WHEN texture IS NOT NULL THEN
-                format(E'\\lo_import %s\n\\set tlo :LASTOID\n', pg_temp.quoted(texture))
-              ELSE '' END,
-              CASE WHEN texture IS NOT NULL THEN ', texture' ELSE '' END,
-              file_name,
-              CASE WHEN texture IS NOT NULL THEN ', lo_get(:tlo)' ELSE '' END,
-              n,
-              CASE WHEN texture IS NOT NULL AND :'mode' = 'user' THEN
-                format(E'\\if :ERROR\n'
+              CASE WHEN texture IS NULL THEN
+                pg_temp.insert(n, file_name, false) || pg_temp.skipped(file_name, :'mode' = 'user')
+              ELSE
+                format(E'\\lo_import %s\n'
+                       '\\set tlo :LASTOID\n'
+                       'SELECT :tlo <> :lo AS textured \\gset\n'
+                       '\\if :textured\n'
+                       '%s'
+                       '\\if :ERROR\n'
+                       'SELECT :''LAST_ERROR_MESSAGE'' LIKE ''cannot build ARG: image: %%'' AS image_refused \\gset\n'
+                       '\\set texture_error :LAST_ERROR_MESSAGE\n'
+                       '\\if :image_refused\n'
+                       '%s'
+                       '\\if :ERROR\n'
                        '\\echo %s :LAST_ERROR_MESSAGE\n'
-                       'INSERT INTO objects (id, model_id, inventory_no, title, class, artist, period, material, licence, up, file, mesh)\n'
-                       '  SELECT n, model_id, nullif(inventory_no, ''''), title, class, artist, period, material, licence,\n'
-                       '         nullif(up, ''''), %L, lo_get(:lo)\n'
-                       '  FROM catalogue WHERE n = %s;\n'
+                       '\\else\n'
+                       '\\echo %s :texture_error\n'
+                       '\\endif\n'
+                       '\\else\n'
+                       '\\echo %s :texture_error\n'
+                       '\\endif\n'
+                       '\\endif\n'
+                       'SELECT lo_unlink(:tlo) \\g /dev/null\n'
+                       '\\else\n'
+                       '\\echo %s\n'
+                       '%s%s'
                        '\\endif\n',
+                       pg_temp.quoted(texture),
+                       pg_temp.insert(n, file_name, true),
+                       pg_temp.insert(n, file_name, false),
+                       pg_temp.quoted('  skipped ' || file_name || ':'),
                        pg_temp.quoted('  ' || file_name || ' loaded without its texture ' || texture_name || ':'),
-                       file_name, n)
-              ELSE '' END,
-              CASE WHEN :'mode' = 'user' THEN
-                format(E'\\if :ERROR\n\\echo %s :LAST_ERROR_MESSAGE\n\\endif\n',
-                       pg_temp.quoted('  skipped ' || file_name || ':'))
-              ELSE '' END,
-              CASE WHEN texture IS NOT NULL THEN E'SELECT lo_unlink(:tlo) \\g /dev/null\n' ELSE '' END
-              || coalesce((SELECT string_agg(
+                       pg_temp.quoted('  skipped ' || file_name || ':'),
+                       pg_temp.quoted('  ' || file_name || ' loaded without its texture ' || texture_name
+                                      || ': it cannot be read'),
+                       pg_temp.insert(n, file_name, false), pg_temp.skipped(file_name, :'mode' = 'user'))
+              END,
+              coalesce((SELECT string_agg(
                     format(E'\\lo_import %s\n'
                            '\\set mlo :LASTOID\n'
+                           'SELECT :mlo <> :lo AS imported \\gset\n'
+                           '\\if :imported\n'
                            'INSERT INTO object_textures (object_id, material, image)\n'
                            '  SELECT id, %L, lo_get(:mlo) FROM objects WHERE id = %s;\n'
-                           'SELECT lo_unlink(:mlo) \\g /dev/null\n',
+                           'SELECT lo_unlink(:mlo) \\g /dev/null\n'
+                           '\\endif\n',
                            pg_temp.quoted(t.path), t.material, n), '' ORDER BY t.material)
                            FROM textures t WHERE t.model_id = c.model_id AND t.material <> ''), ''),
               CASE WHEN n % :every = 0 OR n = :total THEN
