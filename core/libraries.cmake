@@ -33,7 +33,7 @@ set(ARG_METHOD_SOURCES
     features/curvature.cpp features/depth_buffer_descriptor.cpp features/depth_images.cpp
     features/laplace_spectrum.cpp features/node_attributes.cpp features/panorama_descriptor.cpp
     features/panoramic_views.cpp features/shape_distributions.cpp
-    features/vessel_profile.cpp
+    features/vessel_profile.cpp features/surface_detail.cpp
     match/child_halves.cpp match/match_prep.cpp match/mpair.cpp match/node_similarity.cpp
     match/packed_graph.cpp match/part_match.cpp match/sim_key.cpp match/similarity.cpp
     match/similarity_terms.cpp match/subgraph.cpp match/term_weights.cpp match/weights.cpp

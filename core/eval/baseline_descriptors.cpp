@@ -6,6 +6,7 @@
 #include "features/depth_buffer_descriptor.hpp"
 #include "features/panorama_descriptor.hpp"
 #include "features/shape_distributions.hpp"
+#include "features/surface_detail.hpp"
 #include "features/vessel_profile.hpp"
 #include "mesh/clean_mesh.hpp"
 #include "mesh/normalize_pose.hpp"
@@ -29,6 +30,12 @@ std::vector<float> depth(const Mesh& m) {
 std::vector<float> profile(const Mesh& m) {
   return profile_vector(vessel_profile(m));
 }
+std::vector<float> symmetry(const Mesh& m) {
+  return {float(vessel_profile(m).symmetry)};
+}
+std::vector<float> detail(const Mesh& m) {
+  return surface_detail(m);
+}
 
 }  // namespace
 
@@ -47,6 +54,14 @@ const std::vector<DescriptorMethod>& descriptor_methods() {
        "the vessel profile: area, mean radius and its spread in 24 height bins along the most "
        "rotationally symmetric principal axis",
        profile, profile_distance},
+      {"symmetry",
+       "the vessel profile's symmetry score alone: how little the radius about the most "
+       "rotationally symmetric principal axis varies with direction",
+       symmetry, l1_distance},
+      {"detail",
+       "surface detail: how far 4 and 32 Taubin steps move each vertex, area-weighted "
+       "histograms over log10 of the distance",
+       detail, l1_distance},
   };
   return methods;
 }
