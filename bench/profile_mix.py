@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
-"""Mixes arg's distances with the vessel profile's, (1-w) d_arg + w d_profile, leave-one-set-out.
+"""Mixes arg's distances with another method's (the vessel profile's, the surface detail's, ...),
+(1-w) d_arg + w d_other, leave-one-set-out.
 
-  bench/profile_mix.py SET LABELS ARG_MATRIX PROFILE_MATRIX [SET LABELS ARG PROFILE ...]
+  bench/profile_mix.py [--grid W,W,...] SET LABELS ARG_MATRIX PROFILE_MATRIX [SET LABELS ARG PROFILE ...]
 
 The matrices are `argtool eval --matrix` files. Each method's distances are divided by their
 median over the training sets (so w is a share, not a unit); for each held-out set, w is the
-grid value with the best mean FT on the other sets. Scores as argtool eval does (every model
+grid value with the best mean FT on the other sets (--grid: other values than the default
+0 .. 0.5). Scores as argtool eval does (every model
 queries all the others, ties by index, failed models last) and prints NN, FT, DCG overall and
 FT per class for the museum classes.
 """
@@ -65,6 +67,10 @@ def mixed(a, p, sa, sp, w):
 
 
 def main(argv):
+    global GRID
+    if argv[:1] == ["--grid"] and len(argv) > 1:
+        GRID = sorted({0.0, *(float(w) for w in argv[1].split(","))})
+        argv = argv[2:]
     if len(argv) % 4 != 0 or not argv:
         sys.exit(__doc__)
     sets = []
