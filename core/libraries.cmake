@@ -14,7 +14,7 @@ set(ARG_METHOD_SOURCES
     mesh/append_faces.cpp mesh/boundary_loops.cpp mesh/bridge_pieces.cpp mesh/clean_mesh.cpp
     mesh/coincident_vertices.cpp mesh/collapse_short_edges.cpp mesh/connected_components.cpp
     mesh/distance_field.cpp mesh/face_subset.cpp mesh/fill_holes.cpp
-    mesh/marching_tetrahedra.cpp mesh/mesh_edges.cpp mesh/normal_pose.cpp
+    mesh/marching_tetrahedra.cpp mesh/mesh_edges.cpp mesh/nearest_points.cpp mesh/normal_pose.cpp
     mesh/normalize_pose.cpp mesh/restrict_face_values.cpp mesh/stitch_pieces.cpp
     mesh/surface_area.cpp
     mesh/taubin_smoothing.cpp mesh/watertight_proxy.cpp
