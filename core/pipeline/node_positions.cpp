@@ -7,6 +7,7 @@
 
 #include "common/errors.hpp"
 #include "mesh/mesh_edges.hpp"
+#include "mesh/nearest_points.hpp"
 #include "mu/mu_function.hpp"
 #include "pipeline/prepare_surface.hpp"
 #include "reeb/reeb_levels.hpp"
@@ -96,15 +97,52 @@ void show_fine_surface(NodePositions& out, Mesh fine, const std::vector<int>& co
   out.piece_node = std::move(piece_node);
 }
 
+// The model's own surface in place of its proxy (ShownSurface::Own): each vertex takes the mu
+// of the proxy's nearest vertex, each triangle the pieces of the proxy triangle whose centre is
+// nearest its own centre.
+void show_own_surface(NodePositions& out, Mesh own, const StopRequested& stop) {
+  const Mesh& proxy = out.mesh;
+  Vertices centres(proxy.F.rows(), 3);
+  for (Eigen::Index f = 0; f < proxy.F.rows(); ++f)
+    centres.row(f) =
+        (proxy.V.row(proxy.F(f, 0)) + proxy.V.row(proxy.F(f, 1)) + proxy.V.row(proxy.F(f, 2))) / 3;
+  const NearestPoints vertex_index(proxy.V), face_index(centres);
+  std::vector<double> mu(std::size_t(own.V.rows()));
+  for (Eigen::Index v = 0; v < own.V.rows(); ++v) {
+    poll_interrupt(std::size_t(v), stop);
+    mu[std::size_t(v)] = out.mu[std::size_t(vertex_index.nearest(own.V.row(v).transpose()))];
+  }
+  std::vector<int> first, begin{0}, node;
+  first.reserve(std::size_t(own.F.rows()));
+  begin.reserve(std::size_t(own.F.rows()) + 1);
+  for (Eigen::Index f = 0; f < own.F.rows(); ++f) {
+    poll_interrupt(std::size_t(f), stop);
+    const Eigen::Vector3d centre =
+        ((own.V.row(own.F(f, 0)) + own.V.row(own.F(f, 1)) + own.V.row(own.F(f, 2))) / 3)
+            .transpose();
+    const auto from = std::size_t(face_index.nearest(centre));
+    first.push_back(out.face_first_interval[from]);
+    for (int k = out.face_piece_begin[from]; k < out.face_piece_begin[from + 1]; ++k)
+      node.push_back(out.piece_node[std::size_t(k)]);
+    begin.push_back(int(node.size()));
+  }
+  out.mesh = std::move(own);
+  out.mu = std::move(mu);
+  out.face_first_interval = std::move(first);
+  out.face_piece_begin = std::move(begin);
+  out.piece_node = std::move(node);
+}
+
 }  // namespace
 
 NodePositions node_positions(const Mesh& input, const BuildOptions& options,
-                             const StopRequested& stop) {
+                             const StopRequested& stop, ShownSurface shown) {
   if (options.levels < kMinLevels || options.levels > kMaxLevels)
     throw InputError("build options: levels must be in [" + std::to_string(kMinLevels) + ", " +
                      std::to_string(kMaxLevels) + "]");
   NodePositions out;
   PreparedSurface prepared = prepare_surface(input, options, stop);
+  out.on_proxy = prepared.proxy.has_value();
   out.mesh = prepared.proxy    ? std::move(*prepared.proxy)
              : prepared.coarse ? std::move(*prepared.coarse)
                                : std::move(prepared.posed);
@@ -159,6 +197,8 @@ NodePositions node_positions(const Mesh& input, const BuildOptions& options,
   if (prepared.coarse)
     show_fine_surface(out, std::move(prepared.posed), prepared.coarse_vertex, 1 << options.levels,
                       stop);
+  else if (out.on_proxy && shown == ShownSurface::Own)
+    show_own_surface(out, std::move(prepared.posed), stop);
   return out;
 }
 

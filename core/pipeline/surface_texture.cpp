@@ -99,7 +99,7 @@ void colour_made_faces(Mesh& mesh, std::vector<char> known, const StopRequested&
 
 NodePositions node_positions_with_texture(const Mesh& input, const std::vector<float>& input_uv,
                                           const BuildOptions& options, SurfaceTexture* texture,
-                                          const StopRequested& stop) {
+                                          const StopRequested& stop, ShownSurface shown) {
   const Eigen::Index input_faces = input.F.rows();
   if (input_uv.size() != 6 * std::size_t(input_faces))
     throw InputError("texture coordinates: " + std::to_string(input_uv.size()) + " numbers for " +
@@ -109,7 +109,7 @@ NodePositions node_positions_with_texture(const Mesh& input, const std::vector<f
                      " triangles to carry onto the surface");
   Mesh coded = input;
   coded.C = origin_codes(input_faces);
-  NodePositions out = node_positions(coded, options, stop);
+  NodePositions out = node_positions(coded, options, stop, shown);
   Mesh& surface = out.mesh;
   const Eigen::Index nf = surface.F.rows();
   // Every stage carries colours when the input has them: without, no face has an origin.

@@ -243,6 +243,18 @@ status=$?
 check "part-eval: a level no model has fails, saying why" \
   bash -c "test $status -ne 0 && grep -q 'no level 9' '$work/pe9.err' &&
     grep -q 'no model gave a part query' '$work/pe9.err'"
+# 9b. A soup built on its proxy is shown as itself: the 24 triangles of its two boxes, each with
+# a node at every level and mu carried from the proxy.
+"$argtool" view-data "$work/soup.obj" -o "$work/soup-view.json" > /dev/null 2>&1
+check "view-data shows a soup built on its proxy as its own triangles, each with a node" python3 - "$work/soup-view.json" << 'PY'
+import json, sys
+v = json.load(open(sys.argv[1]))
+faces = len(v["faces"]) // 3
+assert faces == 24 and len(v["positions"]) == 3 * 16, (faces, len(v["positions"]))
+assert all(len(level["face_nodes"]) == 24 and min(level["face_nodes"]) >= 0 for level in v["levels"])
+assert len(v["mu"]) == 16 and 0 <= min(v["mu"]) <= max(v["mu"]) <= 1 and max(v["mu"]) > min(v["mu"])
+PY
+
 # 10. view-data maps a texture: its coordinates per corner of the shown surface, the TGA sent
 # as a PNG; a texture that cannot be read, or is too large to map, leaves colours and says why.
 "$argtool" view-data "$work/square.obj" --texture "$work/red.tga" -o "$work/view.json" \

@@ -51,8 +51,9 @@ int run_render(const RenderArgs& a) {
   if (a.level > a.options.levels)
     throw std::runtime_error("--level " + std::to_string(a.level) + " is finer than --levels " +
                              std::to_string(a.options.levels));
-  const arg::NodePositions model =
-      arg::node_positions(argtool::read_mesh_file(a.mesh, a.texture), a.options);
+  // A model built on its proxy is drawn as itself, mu and the nodes carried over from the proxy.
+  const arg::NodePositions model = arg::node_positions(argtool::read_mesh_file(a.mesh, a.texture),
+                                                       a.options, {}, arg::ShownSurface::Own);
   if (a.view == "upright") {
     // The surface is posed: the file's axes are the pose's columns.
     ro.view = arg::upright_view(

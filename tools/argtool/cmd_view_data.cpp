@@ -202,9 +202,11 @@ int run_view_data(const ViewDataArgs& a) {
   // The surface the graph was built on, in the ARG's frame (principal axes on x, y, z), so
   // that the nodes sit where the ARG measured them; with a texture, its coordinates on it.
   arg::SurfaceTexture uv;
+  // A model built on its proxy is shown as itself, the nodes carried over from the proxy.
   const arg::NodePositions p =
-      mapped ? arg::node_positions_with_texture(input, texture.uv, a.options, &uv)
-             : arg::node_positions(input, a.options);
+      mapped ? arg::node_positions_with_texture(input, texture.uv, a.options, &uv, {},
+                                                arg::ShownSurface::Own)
+             : arg::node_positions(input, a.options, {}, arg::ShownSurface::Own);
   const arg::Mesh& m = p.mesh;
   const auto nv = std::size_t(m.V.rows()), nf = std::size_t(m.F.rows());
   std::string out = "{\"format\":1,";
