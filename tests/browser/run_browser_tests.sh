@@ -76,8 +76,9 @@ upload_files_pytest() {
      test_upload_files.py test_demo_catalogue.py)
 }
 
-# A folder with an OBJ of two materials, as `make demo MODELS=DIR` loads it, in a database of its
-# own: the texture colours the ARG and the thumbnail, each material's image reaches the 3D view.
+# A folder with an OBJ of two materials and a soup, as `make demo MODELS=DIR` loads it, in a database of its
+# own: the texture colours the ARG and the thumbnail, each material's image reaches the 3D view,
+# and the soup, built on its proxy, is viewed as its own triangles.
 textured_folder() {
   local dir=$work/textured
   rm -rf "$dir" && mkdir -p "$dir/models" &&
@@ -94,7 +95,7 @@ textured_folder() {
 
 step "what a search by upload accepts: one mesh, an OBJ with its MTL and images, a zip (pytest)" \
   upload_files_pytest
-step "an OBJ folder loads with its texture and each material's (catalogue.py, load.sql, thumbnails)" \
+step "a folder loads as the demo loads it: an OBJ's textures, a soup shown as itself" \
   textured_folder
 step "a database for the browser's catalogue" make_database
 step "the sample catalogue loads as the demo loads it (tools/demo/load.sql)" load_catalogue
