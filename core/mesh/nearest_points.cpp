@@ -7,29 +7,55 @@
 
 namespace arg {
 
+namespace {
+
+// The cell of coordinate x along an axis of `dims` cells from `low`: clamped in floating point
+// before the conversion, so a far or non-finite x lands in an end cell, never past one.
+long long cell_along(double x, double low, double cell, long long dims) {
+  const double at = std::floor((x - low) / cell);
+  return at >= double(dims - 1) ? dims - 1 : at > 0 ? (long long)at : 0;
+}
+
+}  // namespace
+
 NearestPoints::NearestPoints(const Vertices& points, double per_cell) : points_(points) {
   const Eigen::Index n = points.rows();
   if (n == 0) return;
   low_ = points.colwise().minCoeff().transpose();
   const Eigen::Vector3d extent = points.colwise().maxCoeff().transpose() - low_;
-  // Cells of equal sides whose count is about n / per_cell over the bounding box (at least one
-  // a side, and flat boxes sized by their largest sides).
-  const double volume =
-      std::max({extent.x(), 1e-12}) * std::max({extent.y(), 1e-12}) * std::max({extent.z(), 1e-12});
-  const double wanted = std::max(1.0, double(n) / std::max(per_cell, 1e-3));
-  cell_ = std::cbrt(volume / wanted);
-  cell_ = std::max(cell_, extent.maxCoeff() / 1000.0);  // at most 1001 cells a side
+  const double largest = extent.maxCoeff();
+  if (!extent.allFinite()) {  // a non-finite coordinate: one cell, searched whole
+    begin_ = {0, int(n)};
+    order_.resize(std::size_t(n));
+    for (Eigen::Index i = 0; i < n; ++i) order_[std::size_t(i)] = int(i);
+    return;
+  }
+  // Cubic cells, about n / per_cell of them over the bounding box, a thin side counted as a
+  // thousandth of the largest (points on a plane or a line get cells over their own extent);
+  // then as many fewer as it takes to keep the cells under 4 n + 64 in all.
+  const double floor_side = largest / 1000.0;
+  const double volume = std::max(extent.x(), floor_side) * std::max(extent.y(), floor_side) *
+                        std::max(extent.z(), floor_side);
+  const double wanted = std::max(1.0, double(n) / std::max(per_cell, 0.5));
+  cell_ = std::max(std::cbrt(volume / wanted), floor_side);
   if (!(cell_ > 0) || !std::isfinite(cell_)) cell_ = 1;
-  for (int k = 0; k < 3; ++k)
-    dims_[k] = std::clamp<long long>((long long)std::floor(extent[k] / cell_) + 1, 1, 1024);
+  const double most = 4.0 * double(n) + 64.0;
+  for (;;) {
+    double cells = 1;
+    for (int k = 0; k < 3; ++k) {
+      const double side = std::floor(extent[k] / cell_) + 1;
+      dims_[k] = side < 1002 ? (long long)side : 1002;
+      cells *= double(dims_[k]);
+    }
+    if (cells <= most || !std::isfinite(cell_)) break;
+    cell_ *= 1.25;
+  }
   const auto cells = std::size_t(dims_[0] * dims_[1] * dims_[2]);
   std::vector<long long> cell_of(static_cast<std::size_t>(n));
   begin_.assign(cells + 1, 0);
   for (Eigen::Index i = 0; i < n; ++i) {
     long long c[3];
-    for (int k = 0; k < 3; ++k)
-      c[k] = std::clamp<long long>((long long)std::floor((points(i, k) - low_[k]) / cell_), 0,
-                                   dims_[k] - 1);
+    for (int k = 0; k < 3; ++k) c[k] = cell_along(points(i, k), low_[k], cell_, dims_[k]);
     cell_of[std::size_t(i)] = cell_index(c[0], c[1], c[2]);
     ++begin_[std::size_t(cell_of[std::size_t(i)]) + 1];
   }
@@ -41,10 +67,9 @@ NearestPoints::NearestPoints(const Vertices& points, double per_cell) : points_(
 }
 
 int NearestPoints::nearest(const Eigen::Vector3d& q) const {
-  if (points_.rows() == 0) return -1;
+  if (points_.rows() == 0 || !q.allFinite()) return -1;
   long long c[3];
-  for (int k = 0; k < 3; ++k)
-    c[k] = std::clamp<long long>((long long)std::floor((q[k] - low_[k]) / cell_), 0, dims_[k] - 1);
+  for (int k = 0; k < 3; ++k) c[k] = cell_along(q[k], low_[k], cell_, dims_[k]);
   // The query's distance to the grid's box: with q' its nearest point in the box, every point
   // p in the box has |q - p|^2 >= |q - q'|^2 + |q' - p|^2 (the box is convex).
   const Eigen::Vector3d high =

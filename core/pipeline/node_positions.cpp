@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <stdexcept>
 
 #include "common/errors.hpp"
 #include "mesh/mesh_edges.hpp"
@@ -107,10 +108,17 @@ void show_own_surface(NodePositions& out, Mesh own, const StopRequested& stop) {
     centres.row(f) =
         (proxy.V.row(proxy.F(f, 0)) + proxy.V.row(proxy.F(f, 1)) + proxy.V.row(proxy.F(f, 2))) / 3;
   const NearestPoints vertex_index(proxy.V), face_index(centres);
+  // clean_mesh refuses non-finite coordinates, so every query finds a point; -1 would mean a
+  // broken invariant, not bad input.
+  const auto nearest = [](const NearestPoints& index, const Eigen::Vector3d& q) {
+    const int i = index.nearest(q);
+    if (i < 0) throw std::logic_error("own surface: a point with no nearest proxy point");
+    return std::size_t(i);
+  };
   std::vector<double> mu(std::size_t(own.V.rows()));
   for (Eigen::Index v = 0; v < own.V.rows(); ++v) {
     poll_interrupt(std::size_t(v), stop);
-    mu[std::size_t(v)] = out.mu[std::size_t(vertex_index.nearest(own.V.row(v).transpose()))];
+    mu[std::size_t(v)] = out.mu[nearest(vertex_index, own.V.row(v).transpose())];
   }
   std::vector<int> first, begin{0}, node;
   first.reserve(std::size_t(own.F.rows()));
@@ -120,7 +128,7 @@ void show_own_surface(NodePositions& out, Mesh own, const StopRequested& stop) {
     const Eigen::Vector3d centre =
         ((own.V.row(own.F(f, 0)) + own.V.row(own.F(f, 1)) + own.V.row(own.F(f, 2))) / 3)
             .transpose();
-    const auto from = std::size_t(face_index.nearest(centre));
+    const std::size_t from = nearest(face_index, centre);
     first.push_back(out.face_first_interval[from]);
     for (int k = out.face_piece_begin[from]; k < out.face_piece_begin[from + 1]; ++k)
       node.push_back(out.piece_node[std::size_t(k)]);

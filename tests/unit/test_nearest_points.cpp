@@ -2,6 +2,8 @@
 // outside the points' box and for points on a plane or all in one place.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <random>
 
 #include "mesh/nearest_points.hpp"
@@ -48,6 +50,28 @@ TEST(NearestPoints, TiesGoToTheLowestIndexAndNoPointsGiveMinusOne) {
   mirrored << 1, 0, 0, -1, 0, 0;
   EXPECT_EQ(NearestPoints(mirrored).nearest(Eigen::Vector3d(0, 5, 0)), 0);
   EXPECT_EQ(NearestPoints(Vertices(0, 3)).nearest(Eigen::Vector3d(0, 0, 0)), -1);
+}
+
+}  // namespace
+}  // namespace arg
+
+namespace arg {
+namespace {
+
+TEST(NearestPoints, FewPointsOnAPlaneOrALineStayFewCellsAndNonFiniteQueriesFindNone) {
+  Vertices corners(4, 3);
+  corners << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
+  const NearestPoints square(corners);
+  EXPECT_EQ(square.nearest(Eigen::Vector3d(0.5, 0.5, 0)), 0);
+  EXPECT_EQ(square.nearest(Eigen::Vector3d(0.9, 0.8, 3)), 2);
+  Vertices line(2, 3);
+  line << 0, 0, 0, 0, 0, 1e6;
+  EXPECT_EQ(NearestPoints(line).nearest(Eigen::Vector3d(1, 1, 6e5)), 1);
+  EXPECT_EQ(square.nearest(Eigen::Vector3d(std::nan(""), 0, 0)), -1);
+  EXPECT_EQ(square.nearest(Eigen::Vector3d(1e6, 0, 0)), 1);
+  Vertices odd(3, 3);
+  odd << 0, 0, 0, std::numeric_limits<double>::infinity(), 0, 0, 2, 0, 0;
+  EXPECT_EQ(NearestPoints(odd).nearest(Eigen::Vector3d(1.5, 0, 0)), 2);
 }
 
 }  // namespace

@@ -199,8 +199,8 @@ int run_view_data(const ViewDataArgs& a) {
   PageTextures page;
   if (!texture.empty()) page = write_textures(texture, a.texture_output, note);
   const bool mapped = !page.maps.empty();
-  // The surface the graph was built on, in the ARG's frame (principal axes on x, y, z), so
-  // that the nodes sit where the ARG measured them; with a texture, its coordinates on it.
+  // The model's surface in the ARG's frame (principal axes on x, y, z), so that the nodes sit
+  // where the ARG measured them; with a texture, its coordinates on it.
   arg::SurfaceTexture uv;
   // A model built on its proxy is shown as itself, the nodes carried over from the proxy.
   const arg::NodePositions p =
