@@ -18,6 +18,18 @@ namespace arg {
 
 namespace {
 
+// Another surface in place of the one the graph was built on: its mu per vertex and, per
+// triangle, its first interval and its pieces' nodes (as SlicedSurface numbers them).
+void show_surface(NodePositions& out, Mesh mesh, std::vector<double> mu,
+                  std::vector<int> first_interval, std::vector<int> piece_begin,
+                  std::vector<int> piece_node) {
+  out.mesh = std::move(mesh);
+  out.mu = std::move(mu);
+  out.face_first_interval = std::move(first_interval);
+  out.face_piece_begin = std::move(piece_begin);
+  out.piece_node = std::move(piece_node);
+}
+
 // The fine surface in place of its collapsed copy (PreparedSurface::coarse): each fine vertex
 // takes the mu of the copy's vertex it was collapsed into, and each fine triangle the pieces of
 // the copy's triangle with the same corners after the collapse; a triangle the collapse removed
@@ -91,11 +103,8 @@ void show_fine_surface(NodePositions& out, Mesh fine, const std::vector<int>& co
     }
     piece_begin.push_back(int(piece_node.size()));
   }
-  out.mesh = std::move(fine);
-  out.mu = std::move(mu);
-  out.face_first_interval = std::move(first_interval);
-  out.face_piece_begin = std::move(piece_begin);
-  out.piece_node = std::move(piece_node);
+  show_surface(out, std::move(fine), std::move(mu), std::move(first_interval),
+               std::move(piece_begin), std::move(piece_node));
 }
 
 // The model's own surface in place of its proxy (ShownSurface::Own): each vertex takes the mu
@@ -134,11 +143,8 @@ void show_own_surface(NodePositions& out, Mesh own, const StopRequested& stop) {
       node.push_back(out.piece_node[std::size_t(k)]);
     begin.push_back(int(node.size()));
   }
-  out.mesh = std::move(own);
-  out.mu = std::move(mu);
-  out.face_first_interval = std::move(first);
-  out.face_piece_begin = std::move(begin);
-  out.piece_node = std::move(node);
+  show_surface(out, std::move(own), std::move(mu), std::move(first), std::move(begin),
+               std::move(node));
 }
 
 }  // namespace
