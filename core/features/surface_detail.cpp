@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "mesh/mesh_edges.hpp"
+#include "mesh/surface_area.hpp"
 #include "mesh/taubin_smoothing.hpp"
 
 namespace arg {
@@ -12,16 +13,9 @@ namespace arg {
 std::vector<float> surface_detail(const Mesh& posed, const DetailOptions& options) {
   const int bins = std::max(1, options.bins);
   std::vector<float> out(options.steps.size() * std::size_t(bins), 0.0f);
-  // A third of each triangle's area to each of its corners.
-  std::vector<double> area(std::size_t(posed.V.rows()), 0.0);
+  const std::vector<double> area = vertex_areas(posed);
   double total = 0;
-  for (Eigen::Index f = 0; f < posed.F.rows(); ++f) {
-    const Eigen::RowVector3d a = posed.V.row(posed.F(f, 0)), b = posed.V.row(posed.F(f, 1)),
-                             c = posed.V.row(posed.F(f, 2));
-    const double third = 0.5 * (b - a).cross(c - a).norm() / 3.0;
-    for (int k = 0; k < 3; ++k) area[std::size_t(posed.F(f, k))] += third;
-    total += 3 * third;
-  }
+  for (double a : area) total += a;
   if (!(total > 0)) return out;
   const MeshEdges edges = mesh_edges(posed.F);
   const double width = (options.high - options.low) / bins;

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "common/parallel_for.hpp"
+#include "mesh/surface_area.hpp"
 #include "mu/dijkstra.hpp"
 #include "mu/mu_function.hpp"
 #include "mu/surface_graph.hpp"
@@ -34,18 +35,6 @@ std::vector<int> spread_base_points(const Vertices& V, int count, const StopRequ
     next = far;
   }
   return chosen;
-}
-
-// A third of the area of the faces around each vertex.
-std::vector<double> vertex_areas(const Mesh& mesh) {
-  std::vector<double> area(std::size_t(mesh.V.rows()), 0.0);
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-    Eigen::RowVector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)),
-                       c = mesh.V.row(mesh.F(f, 2));
-    double third = 0.5 * (b - a).cross(c - a).norm() / 3.0;
-    for (int k = 0; k < 3; ++k) area[mesh.F(f, k)] += third;
-  }
-  return area;
 }
 
 // Typical edge length of a mesh of the same area made of about `faces` equilateral triangles.
