@@ -12,10 +12,13 @@ namespace arg {
 // search rings of cells outwards until no closer point can lie beyond the ring reached.
 class NearestPoints {
  public:
+  // Keeps a reference to `points`, which must outlive the index (a temporary may not).
   explicit NearestPoints(const Vertices& points, double per_cell = 2.0);
+  explicit NearestPoints(Vertices&&, double = 2.0) = delete;
 
-  // The index of the point nearest to `q` (the lowest index among equally near ones); -1 when
-  // there are no points.
+  // The index of the point nearest to `q` (the lowest index among equally near ones; a point
+  // with a non-finite coordinate is never nearer than a finite one); -1 when there are no
+  // points or q is not finite.
   int nearest(const Eigen::Vector3d& q) const;
 
  private:

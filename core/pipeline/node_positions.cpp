@@ -112,10 +112,11 @@ void show_fine_surface(NodePositions& out, Mesh fine, const std::vector<int>& co
 // nearest its own centre.
 void show_own_surface(NodePositions& out, Mesh own, const StopRequested& stop) {
   const Mesh& proxy = out.mesh;
+  const auto centre = [](const Mesh& m, Eigen::Index f) -> Eigen::Vector3d {
+    return ((m.V.row(m.F(f, 0)) + m.V.row(m.F(f, 1)) + m.V.row(m.F(f, 2))) / 3).transpose();
+  };
   Vertices centres(proxy.F.rows(), 3);
-  for (Eigen::Index f = 0; f < proxy.F.rows(); ++f)
-    centres.row(f) =
-        (proxy.V.row(proxy.F(f, 0)) + proxy.V.row(proxy.F(f, 1)) + proxy.V.row(proxy.F(f, 2))) / 3;
+  for (Eigen::Index f = 0; f < proxy.F.rows(); ++f) centres.row(f) = centre(proxy, f).transpose();
   const NearestPoints vertex_index(proxy.V), face_index(centres);
   // clean_mesh refuses non-finite coordinates, so every query finds a point; -1 would mean a
   // broken invariant, not bad input.
@@ -134,10 +135,7 @@ void show_own_surface(NodePositions& out, Mesh own, const StopRequested& stop) {
   begin.reserve(std::size_t(own.F.rows()) + 1);
   for (Eigen::Index f = 0; f < own.F.rows(); ++f) {
     poll_interrupt(std::size_t(f), stop);
-    const Eigen::Vector3d centre =
-        ((own.V.row(own.F(f, 0)) + own.V.row(own.F(f, 1)) + own.V.row(own.F(f, 2))) / 3)
-            .transpose();
-    const std::size_t from = nearest(face_index, centre);
+    const std::size_t from = nearest(face_index, centre(own, f));
     first.push_back(out.face_first_interval[from]);
     for (int k = out.face_piece_begin[from]; k < out.face_piece_begin[from + 1]; ++k)
       node.push_back(out.piece_node[std::size_t(k)]);

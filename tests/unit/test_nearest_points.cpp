@@ -49,7 +49,8 @@ TEST(NearestPoints, TiesGoToTheLowestIndexAndNoPointsGiveMinusOne) {
   Vertices mirrored(2, 3);
   mirrored << 1, 0, 0, -1, 0, 0;
   EXPECT_EQ(NearestPoints(mirrored).nearest(Eigen::Vector3d(0, 5, 0)), 0);
-  EXPECT_EQ(NearestPoints(Vertices(0, 3)).nearest(Eigen::Vector3d(0, 0, 0)), -1);
+  const Vertices none(0, 3);
+  EXPECT_EQ(NearestPoints(none).nearest(Eigen::Vector3d(0, 0, 0)), -1);
 }
 
 }  // namespace
