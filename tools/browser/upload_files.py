@@ -5,7 +5,7 @@ from __future__ import annotations
 import io
 import re
 import zipfile
-from typing import Dict, List, NamedTuple, Optional, Tuple
+from typing import Any, Dict, List, NamedTuple, Optional, Tuple
 
 MESH_SUFFIXES = (".off", ".obj", ".ply", ".stl", ".glb")
 IMAGE_SUFFIXES = (".png", ".jpg", ".jpeg", ".tga", ".bmp")
@@ -142,6 +142,14 @@ def obj_material_names(obj: bytes) -> Tuple[List[str], List[str]]:
     return libraries, used
 
 
+def material_choice(used: List[str], textured: "Dict[str, Any]") -> Tuple[List[str], List[str]]:
+    """Of the materials with a texture (TEXTURED's keys), those in the order their images are
+    wanted (the ones the OBJ uses, in use order, else all: the first colours the model), and
+    those the 3D view maps (the ones it uses); the same rule for an upload and a catalogue."""
+    mapped = [m for m in used if m in textured]
+    return mapped or list(textured), mapped
+
+
 def obj_texture(name: str, obj: bytes, mtls: Dict[str, Tuple[str, bytes]], images: Dict[str, Tuple[str, bytes]],
                 notes: List[str]) -> Tuple[Optional[str], Optional[bytes], Dict[str, bytes]]:
     """The texture image that colours an OBJ's view (name, bytes): the map_Kd of the first material
@@ -163,7 +171,7 @@ def obj_texture(name: str, obj: bytes, mtls: Dict[str, Tuple[str, bytes]], image
     for _, mtl in named:
         for material, image in materials(mtl).items():
             textures.setdefault(material, image)
-    order = [m for m in used if m in textures] or list(textures)
+    order, _ = material_choice(used, textures)
     wanted = []
     for material in order:
         image = last_part(textures[material])

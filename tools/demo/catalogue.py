@@ -124,9 +124,8 @@ def obj_textures(base: pathlib.Path, obj: pathlib.Path, meshes_here: int,
                       f"{image_name!r}, which is not there", file=sys.stderr)
             elif material not in found:
                 found[material] = image
-    mapped = {m: found[m] for m in used if m in found}
-    order = [m for m in used if m in found] or list(found)
-    return (found[order[0]] if order else None), mapped
+    order, mapped = upload_files.material_choice(used, found)
+    return (found[order[0]] if order else None), {m: found[m] for m in mapped}
 
 
 def write_textures(base: pathlib.Path, files: List[pathlib.Path], model_ids: Dict[pathlib.Path, str],
