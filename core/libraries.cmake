@@ -15,7 +15,8 @@ set(ARG_METHOD_SOURCES
     mesh/coincident_vertices.cpp mesh/collapse_short_edges.cpp mesh/connected_components.cpp
     mesh/distance_field.cpp mesh/face_subset.cpp mesh/fill_holes.cpp
     mesh/marching_tetrahedra.cpp mesh/mesh_edges.cpp mesh/nearest_points.cpp mesh/normal_pose.cpp
-    mesh/normalize_pose.cpp mesh/restrict_face_values.cpp mesh/stitch_pieces.cpp
+    mesh/normalize_pose.cpp mesh/restrict_face_values.cpp mesh/restrict_vertex_positions.cpp
+    mesh/stitch_pieces.cpp
     mesh/surface_area.cpp
     mesh/taubin_smoothing.cpp mesh/watertight_proxy.cpp
     # io: one parser per mesh format (see each reader's header comment), images, GLB, writers

@@ -23,7 +23,11 @@ enum class HoleKind : std::uint8_t { Keep = 0, Fill = 1 };
 struct BuildOptions {
   int levels = 5;  // n: the finest level has 2^n intervals of mu; levels 0..n are kept
   MuKind mu = MuKind::Geodesic;
-  int base_points = 128;  // K, base points of the geodesic integral
+  // K, base points of the geodesic integral. 96 (builder 1.7; 128 before) is a quarter less of
+  // mu, the largest part of a build, with every set's retrieval within .005 and the paper's
+  // Figure 6 property held over every pair of the generated human's poses; 64 and 80 lose that
+  // property (docs/BENCHMARKS.md, "Towards a faster build").
+  int base_points = 96;
   SurfaceKind surface = SurfaceKind::Auto;
   int proxy_resolution = 48;  // grid cells along the longest side of the proxy's grid
   HoleKind holes = HoleKind::Fill;

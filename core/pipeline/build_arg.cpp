@@ -15,6 +15,7 @@
 #include "graph/serialize.hpp"
 #include "mesh/mesh_edges.hpp"
 #include "mesh/restrict_face_values.hpp"
+#include "mesh/restrict_vertex_positions.hpp"
 #include "mesh/taubin_smoothing.hpp"
 #include "mu/mu_function.hpp"
 #include "pipeline/build_memory.hpp"
@@ -47,14 +48,12 @@ Mesh smoothed(const Mesh& mesh, const MeshEdges& edges, int iterations, const St
   return taubin_smoothing(mesh, edges, iterations, 0.5, -0.53, stop);
 }
 
-// The curvature of the fine surface carried to its collapsed copy's triangles: a coarser
-// surface's dihedral angles and angle defects spread differently over its fewer triangles, and
-// the curvature histograms built from them lost half of shrec07's first tier the copy cost.
-// `rough`: needs_smoothing of the fine surface, which the caller has asked already.
-TriangleCurvature fine_curvature(const PreparedSurface& prepared, bool rough,
+// The curvature of the fine (smoothed) surface carried to its collapsed copy's triangles: a
+// coarser surface's dihedral angles and angle defects spread differently over its fewer
+// triangles, and the curvature histograms built from them lost half of shrec07's first tier
+// the copy cost.
+TriangleCurvature fine_curvature(const PreparedSurface& prepared, const Mesh& smooth,
                                  const StopRequested& stop) {
-  const Mesh& fine = prepared.posed;
-  const Mesh smooth = rough ? smoothed(fine, prepared.posed_edges, kSmoothing, stop) : fine;
   const TriangleCurvature on_fine = triangle_curvature(smooth, prepared.posed_edges, stop);
   TriangleCurvature out;
   out.mean =
@@ -143,20 +142,23 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
   // normals measure noise of the size of an edge as readily as shape, and a scan's noise would
   // otherwise fill the curvature histograms and speckle the views. A proxy is a level set
   // already smooth at its voxel size (and a soup's views see its parts as they are).
-  // On a collapsed copy the views' smoothing takes as many fewer steps as the copy has fewer
-  // triangles: a step diffuses over an edge, so the smoothing keeps its reach on the surface.
+  // On a collapsed copy the fine surface is smoothed once, for its curvature, and the views see
+  // the copy with each vertex where the fine vertices collapsed into it went.
   Stopwatch part;
-  Mesh smooth;
+  Mesh smooth, fine_smooth;
   const bool rough = !prepared.proxy && needs_smoothing(prepared.posed, prepared.posed_edges);
-  if (rough) {
-    const double share = double(mesh.F.rows()) / double(prepared.posed.F.rows());
-    smooth = smoothed(mesh, edges, std::max(1, int(std::lround(kSmoothing * share))), stop);
+  if (prepared.coarse) {
+    fine_smooth =
+        rough ? smoothed(prepared.posed, prepared.posed_edges, kSmoothing, stop) : prepared.posed;
+    smooth = rough ? restrict_vertex_positions(mesh, prepared.coarse_vertex, fine_smooth.V) : mesh;
+  } else if (rough) {
+    smooth = smoothed(mesh, edges, kSmoothing, stop);
   } else if (!prepared.proxy) {
     smooth = mesh;
   }
   rep.ms.smoothing = part.lap();
   const TriangleCurvature curvature =
-      prepared.coarse ? fine_curvature(prepared, rough, stop)
+      prepared.coarse ? fine_curvature(prepared, fine_smooth, stop)
                       : triangle_curvature(prepared.proxy ? mesh : smooth, edges, stop);
   rep.ms.curvature = part.lap();
   double volume = 0;
