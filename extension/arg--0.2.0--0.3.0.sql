@@ -35,6 +35,10 @@ CREATE FUNCTION arg_index_check(index regclass,
                                 OUT list_pages bigint, OUT entries bigint, OUT table_rows bigint)
   AS 'MODULE_PATHNAME', 'arg_index_check' LANGUAGE C STRICT PARALLEL RESTRICTED;
 
+-- Builder 1.7 sums mu over 96 base points by default (128 before).
+COMMENT ON FUNCTION arg_build(bytea, text) IS
+  'ARG of a mesh (OFF, OBJ, PLY, STL or GLB, detected); options like ''levels=5 mu=geodesic base_points=96 surface=auto''';
+
 COMMENT ON FUNCTION arg_index_check(regclass) IS
   'checks an arg_ivf index: every page and entry, and every live row of its table indexed once under its value''s sketch';
 

@@ -34,10 +34,11 @@ FROM (SELECT name, arg_info(descr) AS info FROM shapes WHERE name LIKE '%\_0') s
 ORDER BY name;
 SELECT DISTINCT jsonb_object_keys(arg_info(descr)) AS key FROM shapes ORDER BY key;
 
--- arg_nodes: one row per node. Each level's areas sum to 1 / (levels + 1), every node but the
--- root level's has a parent one level up, and the counts agree with arg_info.
+-- arg_nodes: one row per node. Each level's areas sum to 1 / (levels + 1) (within the stored
+-- areas' quantisation), every node but the root level's has a parent one level up, and the
+-- counts agree with arg_info.
 SELECT s.name, n.level, count(*) = (arg_info(s.descr)->'nodes_per_level'->>n.level)::int AS count_agrees,
-       round(sum(n.area)::numeric, 3) AS area_sum,
+       abs(sum(n.area) - 1.0 / 6) < 1e-4 AS area_is_a_sixth,
        bool_and(CASE WHEN n.level = 0 THEN n.parent IS NULL ELSE n.parent >= 0 END) AS parents,
        bool_and(n.mu_min <= n.mu_max) AS mu_ranges
 FROM shapes s, arg_nodes(s.descr) n

@@ -53,7 +53,7 @@ struct BuildOptionKey {
 // Every key parse_build_options accepts, in the order of format_build_options (threads last).
 const std::vector<BuildOptionKey>& build_option_keys();
 
-// Parses "levels=5 mu=geodesic base_points=128 surface=auto proxy_resolution=48 holes=fill
+// Parses "levels=5 mu=geodesic base_points=96 surface=auto proxy_resolution=48 holes=fill
 // threads=2" (any order, any subset; empty gives the defaults). Throws InputError naming the bad
 // key or value.
 BuildOptions parse_build_options(std::string_view text);

@@ -48,10 +48,10 @@ Mesh smoothed(const Mesh& mesh, const MeshEdges& edges, int iterations, const St
   return taubin_smoothing(mesh, edges, iterations, 0.5, -0.53, stop);
 }
 
-// The curvature of the fine (smoothed) surface carried to its collapsed copy's triangles: a
-// coarser surface's dihedral angles and angle defects spread differently over its fewer
-// triangles, and the curvature histograms built from them lost half of shrec07's first tier
-// the copy cost.
+// The curvature of the fine surface (smoothed where it is rough) carried to its collapsed
+// copy's triangles: a coarser surface's dihedral angles and angle defects spread differently
+// over its fewer triangles, and the curvature histograms built from them lost half of
+// shrec07's first tier the copy cost.
 TriangleCurvature fine_curvature(const PreparedSurface& prepared, const Mesh& smooth,
                                  const StopRequested& stop) {
   const TriangleCurvature on_fine = triangle_curvature(smooth, prepared.posed_edges, stop);
@@ -142,15 +142,16 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
   // normals measure noise of the size of an edge as readily as shape, and a scan's noise would
   // otherwise fill the curvature histograms and speckle the views. A proxy is a level set
   // already smooth at its voxel size (and a soup's views see its parts as they are).
-  // On a collapsed copy the fine surface is smoothed once, for its curvature, and the views see
-  // the copy with each vertex where the fine vertices collapsed into it went.
+  // On a collapsed copy of a rough surface the fine surface is smoothed once, for its
+  // curvature, and the views see the copy with each vertex at the mean of the smoothed fine
+  // vertices collapsed into it (builder 1.7); a smooth surface's copy is seen as it is. The
+  // fine smoothing counts as smoothing in the build's timings (it was curvature's before 1.7).
   Stopwatch part;
   Mesh smooth, fine_smooth;
   const bool rough = !prepared.proxy && needs_smoothing(prepared.posed, prepared.posed_edges);
-  if (prepared.coarse) {
-    fine_smooth =
-        rough ? smoothed(prepared.posed, prepared.posed_edges, kSmoothing, stop) : prepared.posed;
-    smooth = rough ? restrict_vertex_positions(mesh, prepared.coarse_vertex, fine_smooth.V) : mesh;
+  if (prepared.coarse && rough) {
+    fine_smooth = smoothed(prepared.posed, prepared.posed_edges, kSmoothing, stop);
+    smooth = restrict_vertex_positions(mesh, prepared.coarse_vertex, fine_smooth.V, stop);
   } else if (rough) {
     smooth = smoothed(mesh, edges, kSmoothing, stop);
   } else if (!prepared.proxy) {
@@ -158,8 +159,9 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
   }
   rep.ms.smoothing = part.lap();
   const TriangleCurvature curvature =
-      prepared.coarse ? fine_curvature(prepared, fine_smooth, stop)
+      prepared.coarse ? fine_curvature(prepared, rough ? fine_smooth : prepared.posed, stop)
                       : triangle_curvature(prepared.proxy ? mesh : smooth, edges, stop);
+  fine_smooth = Mesh{};  // the fine surface's size, not needed past its curvature
   rep.ms.curvature = part.lap();
   double volume = 0;
   std::vector<std::vector<ArgNode>> per_level =

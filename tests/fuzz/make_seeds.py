@@ -646,7 +646,7 @@ def weights_seeds():
 def build_options_seeds():
     t = "fuzz_build_options"
     for name, text in [
-        ("defaults", "levels=5 mu=geodesic base_points=128 threads=1"),
+        ("defaults", "levels=5 mu=geodesic base_points=96 threads=1"),
         ("height", "mu=height levels=3"), ("centroid", "mu=centroid,base_points=8"),
         ("empty", ""), ("levels_zero", "levels=0"), ("levels_huge", "levels=99999999999999999999"),
         ("levels_plus", "levels=+3"), ("levels_hex", "levels=0x3"), ("bad_mu", "mu=random"),
