@@ -1,4 +1,5 @@
 // Decoding texture image bytes: size cap and layout checks, then the loaded decoder.
+#include <cstdint>
 #include <string>
 
 #include "common/errors.hpp"
@@ -16,6 +17,13 @@ Image decode_image(std::string_view bytes, const Limits& limits) {
   const char* format = sniff_image_format(bytes);
   if (!format) throw InputError("image: not a PNG, JPEG, TGA or BMP image");
   check_image_layout(bytes, format);
+  if (std::string_view(format) == "jpeg") {
+    const JpegFrameSize size = jpeg_frame_size(bytes);
+    if (std::uint64_t(size.width) * size.height > limits.max_image_pixels) {
+      throw LimitError("image: " + std::to_string(size.width) + "x" + std::to_string(size.height) +
+                       " pixels, more than " + std::to_string(limits.max_image_pixels));
+    }
+  }
   const ImageDecoder decoder = image_decoder();
   if (!decoder) throw Error("image: no image decoder is loaded (see io/image_decoder.hpp)");
   return decoder(bytes, format, limits);

@@ -1,4 +1,4 @@
-// Checks of PNG, BMP and TGA byte layouts done before OpenImageIO decodes the image.
+// Checks of PNG, BMP, TGA and JPEG byte layouts done before OpenImageIO decodes the image.
 #include "io/image_format_checks.hpp"
 
 #include <zlib.h>
@@ -138,7 +138,56 @@ void check_tga(std::string_view b) {
   }
 }
 
+// The JPEG markers that begin a frame header: SOF0-SOF15 but DHT (C4), JPG (C8) and DAC (CC).
+bool frame_marker(unsigned m) {
+  return m >= 0xC0 && m <= 0xCF && m != 0xC4 && m != 0xC8 && m != 0xCC;
+}
+
 }  // namespace
+
+JpegFrameSize jpeg_frame_size(std::string_view b) {
+  const auto u8 = [&](std::size_t i) { return unsigned(static_cast<unsigned char>(b[i])); };
+  if (b.size() < 2 || u8(0) != 0xFF || u8(1) != 0xD8) fail("jpeg: no start-of-image marker");
+  std::size_t at = 2;
+  for (;;) {
+    // The next marker as libjpeg finds it (jdmarker.c, next_marker): bytes before a 0xFF are
+    // skipped (extraneous data, a warning there), then fill bytes 0xFF, and a 0xFF 0x00 pair is
+    // stuffed data, not a marker. Standalone markers (TEM, RSTn) carry no segment, every other
+    // one a big-endian length that counts itself.
+    unsigned marker = 0;
+    while (marker == 0) {
+      while (at < b.size() && u8(at) != 0xFF) ++at;
+      while (at < b.size() && u8(at) == 0xFF) ++at;
+      if (at >= b.size()) fail("jpeg: truncated data before the frame header");
+      marker = u8(at++);
+    }
+    if (marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) continue;
+    if (marker == 0xD9 || marker == 0xDA)
+      fail("jpeg: the image data starts before any frame header");
+    if (marker == 0xD8) fail("jpeg: a second start-of-image marker");
+    if (b.size() - at < 2)
+      fail("jpeg: truncated marker segment at byte offset " + std::to_string(at - 2));
+    const std::size_t length = u8(at) << 8 | u8(at + 1);
+    if (length < 2 || length > b.size() - at) {
+      fail("jpeg: the marker segment at byte offset " + std::to_string(at - 2) +
+           " runs past the end of the data");
+    }
+    if (frame_marker(marker)) {
+      // Precision (1 byte), then the number of lines and of samples per line, big-endian.
+      if (length < 7) fail("jpeg: a frame header too short to hold its size");
+      JpegFrameSize size;
+      size.height = u8(at + 3) << 8 | u8(at + 4);
+      size.width = u8(at + 5) << 8 | u8(at + 6);
+      if (size.height == 0 || size.width == 0) {
+        fail("jpeg: the frame header declares " + std::to_string(size.width) + "x" +
+             std::to_string(size.height) + " pixels (a height given later by a DNL marker is " +
+             "not supported)");
+      }
+      return size;
+    }
+    at += length;
+  }
+}
 
 const char* sniff_image_format(std::string_view b) {
   auto starts = [&](std::string_view magic) { return b.substr(0, magic.size()) == magic; };

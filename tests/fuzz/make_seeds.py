@@ -166,6 +166,10 @@ def image_seeds():
     put(t, "jpeg_colour_8x8.jpg", jpeg(8, 8, components=3))
     put(t, "jpeg_truncated.jpg", jpeg(16, 16)[:120])
     put(t, "jpeg_declares_65000x65000.jpg", jpeg(65000, 65000)[:200])
+    # Progressive (SOF2): libjpeg allocates every coefficient while the image is opened, so the
+    # size must be refused before (found by fuzzing as an out-of-memory).
+    put(t, "jpeg_progressive_declares_65000x65000.jpg",
+        jpeg(65000, 65000)[:200].replace(b"\xff\xc0", b"\xff\xc2", 1))
     put(t, "jpeg_soi_only.jpg", b"\xff\xd8\xff")
     put(t, "tga_rgb_3x2.tga", tga(3, 2))
     put(t, "tga_rgb_top_first_2x2.tga", tga(2, 2, top_first=True))

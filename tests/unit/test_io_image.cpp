@@ -3,6 +3,7 @@
 
 #include "common/errors.hpp"
 #include "io/image.hpp"
+#include "io/image_format_checks.hpp"
 #include "io/texture_sampling.hpp"
 #include "test_io_support.hpp"
 
@@ -91,6 +92,71 @@ TEST(IoImage, PixelCountIsCheckedBeforeThePixelsAreRead) {
   EXPECT_THROW(decode_image(ok, limits), LimitError);
   limits.max_image_pixels = 64;
   EXPECT_EQ(decode_image(ok, limits).width, 8);
+}
+
+// A progressive JPEG (SOF2) whose frame header declares 65000 x 65000 pixels, 183 bytes found
+// by fuzz_decode_image: libjpeg asked for 8 GB of coefficients while OpenImageIO opened it,
+// before the decoder's own pixel check. The frame header is read and refused first.
+std::string progressive_jpeg_65000() {
+  const unsigned char bytes[] = {
+      0xff, 0xd8, 0xff, 0xdb, 0x00, 0x43, 0x00, 0x01, 0x01, 0x01, 0x01, 0x01, 0x01, 0x01, 0x01,
+      0x01, 0x01, 0x01, 0x01, 0x01, 0x01, 0x01, 0x73, 0xff, 0xff, 0xff, 0xff, 0x01, 0x01, 0x01,
+      0x01, 0x01, 0x01, 0x01, 0x01, 0x01, 0x01, 0x01, 0x01, 0x01, 0x11, 0x00, 0xff, 0xc4, 0x00,
+      0x26, 0x00, 0x01, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0xf7, 0xda, 0x00, 0x08, 0x01, 0x01, 0x01,
+      0x01, 0x01, 0x01, 0x01, 0x01, 0x01, 0x01, 0x01, 0xff, 0xc2, 0x00, 0x0b, 0x08, 0xfd, 0xe8,
+      0xfd, 0xe8, 0x01, 0x01, 0x11, 0x00, 0xff, 0xc4, 0x00, 0x26, 0x00, 0x01, 0x00, 0x00, 0x00,
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x10, 0x01,
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+      0x00, 0xff, 0xda, 0x00, 0x08, 0x01, 0x01, 0x03, 0x00, 0x00, 0x00, 0x00, 0x00, 0x3f, 0x00,
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x2c, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+      0x00, 0x00, 0x00};
+  return std::string(reinterpret_cast<const char*>(bytes), sizeof bytes);
+}
+
+TEST(IoImage, AJpegFrameTooLargeIsRefusedBeforeTheDecoderOpensIt) {
+  const std::string huge = progressive_jpeg_65000();
+  ASSERT_EQ(huge.size(), 183u);
+  const JpegFrameSize size = jpeg_frame_size(huge);
+  EXPECT_EQ(size.width, 65000u);
+  EXPECT_EQ(size.height, 65000u);
+  try {
+    decode_image(huge, Limits{});
+    ADD_FAILURE() << "decoded";
+  } catch (const LimitError& e) {
+    EXPECT_NE(std::string(e.what()).find("65000x65000"), std::string::npos) << e.what();
+  }
+  // A real JPEG's frame is read as it was encoded, and the cap holds to the pixel.
+  const std::string jpeg = test_io::encode_image("jpeg", 16, 12, [](int, int) {
+    return std::array<std::uint8_t, 3>{10, 20, 30};
+  });
+  EXPECT_EQ(jpeg_frame_size(jpeg).width, 16u);
+  EXPECT_EQ(jpeg_frame_size(jpeg).height, 12u);
+  Limits limits;
+  limits.max_image_pixels = 191;
+  EXPECT_THROW(decode_image(jpeg, limits), LimitError);
+  limits.max_image_pixels = 192;
+  EXPECT_EQ(decode_image(jpeg, limits).height, 12);
+}
+
+TEST(IoImage, AJpegWithoutAReadableFrameHeaderIsAnInputError) {
+  const std::string jpeg = test_io::encode_image("jpeg", 16, 16, [](int, int) {
+    return std::array<std::uint8_t, 3>{0, 0, 0};
+  });
+  const std::size_t frame = jpeg.find("\xff\xc0");
+  ASSERT_NE(frame, std::string::npos);
+  // Every prefix that ends before the frame header's size is complete.
+  for (std::size_t n = 0; n < frame + 9; ++n)
+    EXPECT_THROW(jpeg_frame_size(jpeg.substr(0, n)), InputError) << "prefix " << n;
+  // A segment length past the data, a scan before any frame, and a height left to a DNL marker.
+  std::string long_segment = jpeg;
+  long_segment[4] = char(0x7f);
+  EXPECT_THROW(jpeg_frame_size(long_segment), InputError);
+  EXPECT_THROW(jpeg_frame_size(std::string("\xff\xd8\xff\xda\x00\x02", 6)), InputError);
+  std::string no_height = jpeg;
+  no_height[frame + 5] = 0, no_height[frame + 6] = 0;
+  EXPECT_THROW(decode_image(no_height, {}), InputError);
 }
 
 TEST(IoImage, GarbageAndTruncatedImagesAreInputErrors) {
