@@ -10,6 +10,7 @@
 #include "mesh/clean_mesh.hpp"
 #include "mesh/mesh_edges.hpp"
 #include "mesh/normalize_pose.hpp"
+#include "mesh/taubin_smoothing.hpp"
 #include "mu/mu_function.hpp"
 #include "pipeline/build_arg.hpp"
 #include "reeb/reeb_levels.hpp"
@@ -59,6 +60,13 @@ void BM_Clean(benchmark::State& state) {
 void BM_Pose(benchmark::State& state) {
   const Mesh& m = prepared(state).mesh;
   for (auto _ : state) benchmark::DoNotOptimize(apply_pose(m, surface_pose(m)));
+  set_counters(state);
+}
+
+// The 80 pairs of Taubin steps a rough surface takes before its curvature and views.
+void BM_Smoothing(benchmark::State& state) {
+  const Prepared& p = prepared(state);
+  for (auto _ : state) benchmark::DoNotOptimize(taubin_smoothing(p.mesh, p.edges, 80));
   set_counters(state);
 }
 
@@ -113,6 +121,7 @@ void BM_WholeBuild(benchmark::State& state) {
 STAGE(BM_ReadOff);
 STAGE(BM_Clean);
 STAGE(BM_Pose);
+STAGE(BM_Smoothing);
 STAGE(BM_MuGeodesic);
 STAGE(BM_SliceAndReeb);
 STAGE(BM_Features);
