@@ -18,7 +18,7 @@ set(ARG_METHOD_SOURCES
     mesh/normalize_pose.cpp mesh/restrict_face_values.cpp mesh/restrict_vertex_positions.cpp
     mesh/stitch_pieces.cpp
     mesh/surface_area.cpp
-    mesh/taubin_smoothing.cpp mesh/watertight_proxy.cpp
+    mesh/surface_roughness.cpp mesh/taubin_smoothing.cpp mesh/watertight_proxy.cpp
     # io: one parser per mesh format (see each reader's header comment), images, GLB, writers
     io/decode_image.cpp io/detect_format.cpp io/glb_container.cpp io/gltf_accessor.cpp
     io/image_decoder.cpp io/image_format_checks.cpp io/memory_stream.cpp io/off_header.cpp

@@ -16,6 +16,7 @@
 #include "mesh/mesh_edges.hpp"
 #include "mesh/restrict_face_values.hpp"
 #include "mesh/restrict_vertex_positions.hpp"
+#include "mesh/surface_roughness.hpp"
 #include "mesh/taubin_smoothing.hpp"
 #include "mu/mu_function.hpp"
 #include "pipeline/build_memory.hpp"
@@ -28,20 +29,34 @@ namespace arg {
 
 namespace {
 
-// Taubin iterations before curvature and the views: under Gaussian noise of 0.3% of the
-// diagonal (perturb noise, strength 3) 10 left shrec07's queries .10 below their clean mAP, 80
-// leave them .03 below, and the clean scores move by less than .005 (docs/BENCHMARKS.md).
-constexpr int kSmoothing = 80;
+// Taubin iterations before curvature and the views on a rough surface: under Gaussian noise of
+// 0.3% of the diagonal (perturb noise, strength 3) 10 left shrec07's queries .10 below their
+// clean mAP, 80 leave them .03 below (docs/BENCHMARKS.md).
+constexpr int kSmoothingRough = 80;
+// On a fine surface that measures smooth, 10 iterations: the curvature of its tessellation is
+// evened out as well as by 80 (every set's scores within .005, builder 1.8), for an eighth
+// of the work, which on a 30,000-vertex scan was a fifth of its build.
+constexpr int kSmoothingFine = 10;
+// The mean normal offset (mesh/surface_roughness.hpp) above which a fine surface is rough: the
+// clean models of shrec07 and shrec11 measure .03 to .093, the same with noise of 0.1% of the
+// diagonal .088 to .196 and with 0.3% .159 to .309 (docs/BENCHMARKS.md).
+constexpr double kRoughAbove = 0.125;
 
-// Whether a mesh calls for smoothing against noise of the size of an edge: its edges are short
-// (mean under 2% of its bounding box's diagonal: scans and fine meshes). A coarse mesh's edges
-// are its shape, and smoothing would round a 12-triangle box into a blob, so it stays as it is.
-bool needs_smoothing(const Mesh& mesh, const MeshEdges& edges) {
+// The Taubin iterations a surface takes. A coarse mesh (mean edge over 2% of its bounding
+// box's diagonal) takes none: its edges are its shape, and smoothing would round a
+// 12-triangle box into a blob. A fine one (scans, fine meshes) takes kSmoothingRough when its
+// normal offsets say noise of the size of an edge, else kSmoothingFine.
+int smoothing_steps(const Mesh& mesh, const MeshEdges& edges, const StopRequested& stop) {
   double sum = 0;
   for (int e = 0; e < edges.count(); ++e)
     sum += (mesh.V.row(edges.v0[e]) - mesh.V.row(edges.v1[e])).norm();
   const double diagonal = (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).norm();
-  return edges.count() > 0 && sum / edges.count() < 0.02 * diagonal;
+  if (edges.count() == 0 || sum / edges.count() >= 0.02 * diagonal) return 0;
+  const std::vector<double> offsets = normal_offsets(mesh, edges, stop);
+  double mean = 0;
+  for (double r : offsets) mean += r;
+  mean /= double(offsets.size());
+  return mean > kRoughAbove ? kSmoothingRough : kSmoothingFine;
 }
 
 Mesh smoothed(const Mesh& mesh, const MeshEdges& edges, int iterations, const StopRequested& stop) {
@@ -142,24 +157,28 @@ ArgGraph build_arg(const Mesh& input, const BuildOptions& options, const StopReq
   // normals measure noise of the size of an edge as readily as shape, and a scan's noise would
   // otherwise fill the curvature histograms and speckle the views. A proxy is a level set
   // already smooth at its voxel size (and a soup's views see its parts as they are).
-  // On a collapsed copy of a rough surface the fine surface is smoothed once, for its
+  // On a collapsed copy of a fine surface the fine surface is smoothed once, for its
   // curvature, and the views see the copy with each vertex at the mean of the smoothed fine
-  // vertices collapsed into it (builder 1.7); a smooth surface's copy is seen as it is. The
-  // fine smoothing counts as smoothing in the build's timings (it was curvature's before 1.7).
+  // vertices collapsed into it (builder 1.7); a coarse surface's copy is seen as it is. A fine
+  // surface takes 80 or 10 iterations by its roughness (builder 1.8). The fine smoothing counts as
+  // smoothing in the build's timings (it was curvature's before 1.7).
   Stopwatch part;
   Mesh smooth, fine_smooth;
-  const bool rough = !prepared.proxy && needs_smoothing(prepared.posed, prepared.posed_edges);
-  if (prepared.coarse && rough) {
-    fine_smooth = smoothed(prepared.posed, prepared.posed_edges, kSmoothing, stop);
+  const int steps =
+      prepared.proxy ? 0 : smoothing_steps(prepared.posed, prepared.posed_edges, stop);
+  const bool fine = steps > 0;
+  rep.smoothing_steps = steps;
+  if (prepared.coarse && fine) {
+    fine_smooth = smoothed(prepared.posed, prepared.posed_edges, steps, stop);
     smooth = restrict_vertex_positions(mesh, prepared.coarse_vertex, fine_smooth.V, stop);
-  } else if (rough) {
-    smooth = smoothed(mesh, edges, kSmoothing, stop);
+  } else if (fine) {
+    smooth = smoothed(mesh, edges, steps, stop);
   } else if (!prepared.proxy) {
     smooth = mesh;
   }
   rep.ms.smoothing = part.lap();
   const TriangleCurvature curvature =
-      prepared.coarse ? fine_curvature(prepared, rough ? fine_smooth : prepared.posed, stop)
+      prepared.coarse ? fine_curvature(prepared, fine ? fine_smooth : prepared.posed, stop)
                       : triangle_curvature(prepared.proxy ? mesh : smooth, edges, stop);
   fine_smooth = Mesh{};  // the fine surface's size, not needed past its curvature
   rep.ms.curvature = part.lap();

@@ -33,6 +33,7 @@ struct BuildReport {
   std::size_t set_aside_pieces = 0;  // small pieces of a torn surface left out (holes=fill)
   std::size_t filled_loops = 0;      // holes closed (holes=fill)
   bool proxy = false;                // mu and the graph were computed on the watertight proxy
+  int smoothing_steps = 0;           // Taubin steps before curvature and views: 0, 10 or 80
   BuildTimings ms;
 };
 

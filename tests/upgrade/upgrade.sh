@@ -125,8 +125,8 @@ check "a 0.1.0 value compares with itself (SIM 0)" \
 check "0.1.0 values of other build options are refused (22023, naming both options)" \
   fails_with $old 22023 "levels=2" "levels=3" "builder 1.0.0" \
   "SELECT arg_sim(a.descr, b.descr) FROM legacy a, legacy b WHERE a.id = 1 AND b.id = 3"
-check "a 0.1.0 value against a build of today, same options: refused (22023, naming builders 1.0.0 and 1.7.0)" \
-  fails_with $old 22023 "builder 1.0.0" "builder 1.7.0" "arg_rebuild_needed" \
+check "a 0.1.0 value against a build of today, same options: refused (22023, naming builders 1.0.0 and 1.8.0)" \
+  fails_with $old 22023 "builder 1.0.0" "builder 1.8.0" "arg_rebuild_needed" \
   "SELECT descr <~> arg_build(arg_generate_model('human', 0, 12), 'levels=2 base_points=16 surface=mesh holes=keep') FROM legacy WHERE id = 1"
 check "arg_matches and arg_part_match refuse them too" \
   fails_with $old 22023 "builder 1.0.0" \

@@ -50,7 +50,8 @@ nlohmann::json describe(const argtool::LoadedArg& loaded) {
         {"dropped_duplicate", r.dropped_duplicate},  {"flipped_faces", r.flipped_faces},
         {"boundary_edges", r.boundary_edges},        {"nonmanifold_edges", r.nonmanifold_edges},
         {"stitched_pairs", r.stitched_pairs},        {"bridged_pieces", r.bridged_pieces},
-        {"set_aside_pieces", r.set_aside_pieces},    {"filled_holes", r.filled_loops}};
+        {"set_aside_pieces", r.set_aside_pieces},    {"filled_holes", r.filled_loops},
+        {"smoothing_steps", r.smoothing_steps}};
     j["timings_ms"] = {{"read", r.ms.read},           {"clean", r.ms.clean},
                        {"normalise", r.ms.normalise}, {"mu", r.ms.mu},
                        {"reeb", r.ms.reeb},           {"features", r.ms.features},
