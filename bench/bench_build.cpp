@@ -8,8 +8,10 @@
 #include "io/read_mesh.hpp"
 #include "io/write_mesh.hpp"
 #include "mesh/clean_mesh.hpp"
+#include "mesh/collapse_short_edges.hpp"
 #include "mesh/mesh_edges.hpp"
 #include "mesh/normalize_pose.hpp"
+#include "mesh/surface_area.hpp"
 #include "mesh/taubin_smoothing.hpp"
 #include "mu/mu_function.hpp"
 #include "pipeline/build_arg.hpp"
@@ -70,6 +72,16 @@ void BM_Smoothing(benchmark::State& state) {
   set_counters(state);
 }
 
+// The collapse of the spectrum's copy: edges shorter than those of 10,000 equilateral triangles.
+void BM_Collapse(benchmark::State& state) {
+  const Prepared& p = prepared(state);
+  CollapseOptions options;
+  options.min_length = std::sqrt(4.0 * surface_area(p.mesh) / (std::sqrt(3.0) * 10000.0));
+  std::vector<int> map;
+  for (auto _ : state) benchmark::DoNotOptimize(collapse_short_edges(p.mesh, options, {}, &map));
+  set_counters(state);
+}
+
 void BM_MuGeodesic(benchmark::State& state) {
   const Prepared& p = prepared(state);
   for (auto _ : state) benchmark::DoNotOptimize(normalised_mu(p.mesh, p.edges, BuildOptions{}));
@@ -122,6 +134,7 @@ STAGE(BM_ReadOff);
 STAGE(BM_Clean);
 STAGE(BM_Pose);
 STAGE(BM_Smoothing);
+STAGE(BM_Collapse);
 STAGE(BM_MuGeodesic);
 STAGE(BM_SliceAndReeb);
 STAGE(BM_Features);
