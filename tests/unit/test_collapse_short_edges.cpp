@@ -49,3 +49,63 @@ TEST(CollapseVertexMap, SurvivingTrianglesKeepTheirColour) {
     EXPECT_EQ(coarse.C(f, 1), 0.5f);
   }
 }
+
+namespace {
+
+// Every edge of a closed manifold lies on exactly two triangles, and no triangle repeats a
+// corner; returns V - E + F.
+int closed_euler_characteristic(const Mesh& m) {
+  std::vector<std::pair<int, int>> edges;
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = m.F(f, k), b = m.F(f, (k + 1) % 3);
+      EXPECT_NE(a, b) << "triangle " << f;
+      edges.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    EXPECT_EQ(j - i, 2u) << "edge " << edges[i].first << "-" << edges[i].second;
+    i = j;
+  }
+  return int(m.V.rows()) - int(edges.size() / 2) + int(m.F.rows());
+}
+
+}  // namespace
+
+// Far collapses merge the faces around a vertex many times over (each survivor's list outgrows
+// the room it started with): the surface stays closed, manifold and of its genus.
+TEST(CollapseTopology, AFarCollapseKeepsGenusAndManifold) {
+  CollapseOptions o;
+  o.min_length = 0.5;
+  const Mesh torus = test::torus(2, 0.6, 120, 45);
+  const Mesh coarse_torus = collapse_short_edges(torus, o);
+  EXPECT_LT(coarse_torus.F.rows(), torus.F.rows() / 10);
+  EXPECT_EQ(closed_euler_characteristic(coarse_torus), 0);
+
+  o.min_length = 0.4;
+  const Mesh sphere = test::sphere(60, 80);  // poles of 80 triangles
+  const Mesh coarse_sphere = collapse_short_edges(sphere, o);
+  EXPECT_LT(coarse_sphere.F.rows(), sphere.F.rows() / 10);
+  EXPECT_EQ(closed_euler_characteristic(coarse_sphere), 2);
+
+  // A thin tube of four vertices around: without the link condition it pinches shut.
+  o.min_length = 0.3;
+  const Mesh tube = test::torus(2, 0.05, 200, 4);
+  const Mesh coarse_tube = collapse_short_edges(tube, o);
+  EXPECT_LT(coarse_tube.F.rows(), tube.F.rows() / 4);
+  EXPECT_EQ(closed_euler_characteristic(coarse_tube), 0);
+}
+
+// Shortest first, ties by vertex index: the same mesh collapses to the same bytes every time.
+TEST(CollapseTopology, TheSameMeshCollapsesTheSameWay) {
+  CollapseOptions o;
+  o.min_length = 0.3;
+  const Mesh sphere = test::sphere(40, 50);
+  const Mesh a = collapse_short_edges(sphere, o), b = collapse_short_edges(sphere, o);
+  ASSERT_EQ(a.V.rows(), b.V.rows());
+  ASSERT_EQ(a.F.rows(), b.F.rows());
+  EXPECT_TRUE(a.V == b.V);
+  EXPECT_TRUE(a.F == b.F);
+}
