@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <numeric>
 #include <vector>
 
@@ -20,25 +22,33 @@ std::vector<int> weld_map(const Vertices& V, std::size_t* welded, const StopRequ
   const Eigen::Index n = V.rows();
   Eigen::RowVector3d lo = V.colwise().minCoeff(), hi = V.colwise().maxCoeff();
   const double eps = std::max((hi - lo).norm() * 1e-10, 1e-300);
-  std::vector<std::array<long long, 3>> key(static_cast<std::size_t>(n));
+  // Sorted by value, not through an index: each comparison reads its two keys in place.
+  struct Key {
+    std::array<long long, 3> at;
+    int vertex;
+    bool operator<(const Key& o) const {
+      if (at[0] != o.at[0]) return at[0] < o.at[0];
+      if (at[1] != o.at[1]) return at[1] < o.at[1];
+      if (at[2] != o.at[2]) return at[2] < o.at[2];
+      return vertex < o.vertex;
+    }
+  };
+  std::vector<Key> key(static_cast<std::size_t>(n));
   for (Eigen::Index i = 0; i < n; ++i) {
     poll_interrupt(std::size_t(i), stop);
-    for (int c = 0; c < 3; ++c) key[i][c] = std::llround((V(i, c) - lo[c]) / eps);
+    for (int c = 0; c < 3; ++c) key[std::size_t(i)].at[c] = std::llround((V(i, c) - lo[c]) / eps);
+    key[std::size_t(i)].vertex = int(i);
   }
-  std::vector<int> order(static_cast<std::size_t>(n));
-  std::iota(order.begin(), order.end(), 0);
-  polled_sort(
-      order.begin(), order.end(),
-      [&](int a, int b) { return key[a] != key[b] ? key[a] < key[b] : a < b; }, stop);
+  polled_sort(key.begin(), key.end(), std::less<>(), stop);
   std::vector<int> map(static_cast<std::size_t>(n));
   *welded = 0;
-  for (std::size_t k = 0; k < order.size(); ++k) {
+  for (std::size_t k = 0; k < key.size(); ++k) {
     poll_interrupt(k, stop);
-    if (k > 0 && key[order[k]] == key[order[k - 1]]) {
-      map[order[k]] = map[order[k - 1]];
+    if (k > 0 && key[k].at == key[k - 1].at) {
+      map[std::size_t(key[k].vertex)] = map[std::size_t(key[k - 1].vertex)];
       ++*welded;
     } else {
-      map[order[k]] = order[k];
+      map[std::size_t(key[k].vertex)] = key[k].vertex;
     }
   }
   return map;
@@ -121,7 +131,16 @@ Mesh clean_mesh(const Mesh& in, CleanReport* report, const StopRequested& stop) 
   const double min_area = 1e-14 * (hi - lo).squaredNorm();
 
   // Keep faces with three distinct corners, positive area and a corner set not seen before.
-  std::vector<std::array<int, 3>> keys;
+  // A face's sorted corners and its place among the kept, packed into two words (ids are not
+  // negative, so the words compare as the tuples do).
+  struct Corners {
+    std::uint64_t first_two, third_and_place;
+    bool operator<(const Corners& o) const {
+      return first_two != o.first_two ? first_two < o.first_two
+                                      : third_and_place < o.third_and_place;
+    }
+  };
+  std::vector<Corners> keys;
   std::vector<int> kept;
   keys.reserve(std::size_t(in.F.rows()));
   for (Eigen::Index f = 0; f < in.F.rows(); ++f) {
@@ -133,18 +152,17 @@ Mesh clean_mesh(const Mesh& in, CleanReport* report, const StopRequested& stop) 
     }
     std::array<int, 3> key{a, b, c};
     std::sort(key.begin(), key.end());
-    keys.push_back(key);
+    keys.push_back({std::uint64_t(key[0]) << 32 | std::uint32_t(key[1]),
+                    std::uint64_t(key[2]) << 32 | std::uint32_t(kept.size())});
     kept.push_back(int(f));
   }
-  std::vector<int> order(kept.size());
-  std::iota(order.begin(), order.end(), 0);
-  polled_sort(
-      order.begin(), order.end(),
-      [&](int x, int y) { return keys[x] != keys[y] ? keys[x] < keys[y] : x < y; }, stop);
+  polled_sort(keys.begin(), keys.end(), std::less<>(), stop);
   std::vector<char> duplicate(kept.size(), 0);
-  for (std::size_t k = 1; k < order.size(); ++k) {
+  for (std::size_t k = 1; k < keys.size(); ++k) {
     poll_interrupt(k, stop);
-    if (keys[order[k]] == keys[order[k - 1]]) duplicate[order[k]] = 1, ++r.dropped_duplicate;
+    if (keys[k].first_two == keys[k - 1].first_two &&
+        keys[k].third_and_place >> 32 == keys[k - 1].third_and_place >> 32)
+      duplicate[std::uint32_t(keys[k].third_and_place)] = 1, ++r.dropped_duplicate;
   }
   check_interrupt(stop);
 
