@@ -61,8 +61,9 @@ double triangle_area(const Vertices& V, int a, int b, int c) {
 
 // Flips faces so that faces sharing a manifold edge traverse it in opposite directions.
 // Returns, per face, the orientation patch it belongs to.
+// `turned` toggles for each face flipped.
 std::vector<int> orient_patches(Triangles& F, const MeshEdges& E, std::size_t* flipped,
-                                const StopRequested& stop) {
+                                std::vector<char>& turned, const StopRequested& stop) {
   const int m = int(F.rows());
   // face -> its three edges, for the traversal
   std::vector<std::array<int, 3>> face_edges(std::size_t(m), {-1, -1, -1});
@@ -97,6 +98,7 @@ std::vector<int> orient_patches(Triangles& F, const MeshEdges& E, std::size_t* f
         if (patch[g] >= 0) continue;
         if (direction(f, E.v0[e], E.v1[e]) == direction(g, E.v0[e], E.v1[e])) {
           std::swap(F(g, 1), F(g, 2));
+          turned[std::size_t(g)] ^= 1;
           ++*flipped;
           // the flipped face's corner numbering changed: recompute its edge slots
           std::array<int, 3> slots = face_edges[g];
@@ -113,7 +115,7 @@ std::vector<int> orient_patches(Triangles& F, const MeshEdges& E, std::size_t* f
 
 }  // namespace
 
-Mesh clean_mesh(const Mesh& in, CleanReport* report, const StopRequested& stop) {
+Mesh clean_mesh(const Mesh& in, CleanReport* report, const StopRequested& stop, MeshEdges* edges) {
   CleanReport local;
   CleanReport& r = report ? *report : local;
   r = CleanReport{};
@@ -204,7 +206,8 @@ Mesh clean_mesh(const Mesh& in, CleanReport* report, const StopRequested& stop) 
     if (E.faces(e) == 1) ++r.boundary_edges;
     if (E.faces(e) > 2) ++r.nonmanifold_edges;
   }
-  std::vector<int> patch = orient_patches(out.F, E, &r.flipped_faces, stop);
+  std::vector<char> turned(std::size_t(out.F.rows()), 0);
+  std::vector<int> patch = orient_patches(out.F, E, &r.flipped_faces, turned, stop);
 
   // Turn each patch so that it encloses positive volume about its own centroid.
   const int patches = patch.empty() ? 0 : *std::max_element(patch.begin(), patch.end()) + 1;
@@ -232,8 +235,20 @@ Mesh clean_mesh(const Mesh& in, CleanReport* report, const StopRequested& stop) 
   for (int f = 0; f < out.F.rows(); ++f)
     if (volume[patch[f]] < 0) {
       std::swap(out.F(f, 1), out.F(f, 2));
+      turned[std::size_t(f)] ^= 1;
       ++r.flipped_faces;
     }
+  if (edges) {
+    // A turned face (corners 1 and 2 swapped) calls its first edge its third and the other way
+    // round. The table's order is unchanged: within an edge, faces are listed by id, and a face
+    // with three distinct corners holds each edge once.
+    for (std::size_t k = 0; k < E.face_of.size(); ++k) {
+      poll_interrupt(k, stop);
+      std::int8_t& c = E.corner_of[k];
+      if (turned[std::size_t(E.face_of[k])]) c = std::int8_t(c == 1 ? 1 : 2 - c);
+    }
+    *edges = std::move(E);
+  }
   return out;
 }
 

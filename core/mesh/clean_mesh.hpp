@@ -5,6 +5,7 @@
 
 #include "common/limits.hpp"
 #include "mesh/mesh.hpp"
+#include "mesh/mesh_edges.hpp"
 
 namespace arg {
 
@@ -21,6 +22,9 @@ struct CleanReport {
 // Returns the cleaned mesh (colours follow their faces). Coordinates must be finite; throws
 // InputError on NaN/Inf and when nothing with positive area is left. Orientation is made
 // consistent across manifold edges, then each closed part is turned to enclose positive volume.
-Mesh clean_mesh(const Mesh& mesh, CleanReport* report = nullptr, const StopRequested& stop = {});
+// `edges`, when given, receives the returned mesh's edge table, as mesh_edges would build it
+// (the table cleaning needs anyway, its corners renumbered where a face was turned).
+Mesh clean_mesh(const Mesh& mesh, CleanReport* report = nullptr, const StopRequested& stop = {},
+                MeshEdges* edges = nullptr);
 
 }  // namespace arg

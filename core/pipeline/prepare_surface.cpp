@@ -72,18 +72,18 @@ bool wide_open(double boundary, double area) {
 // stitched, and when one piece then holds nearly all the area the others are set aside. Taken
 // only when that leaves one closed-but-for-holes surface (specks under 1% aside, not wide open):
 // a soup of open panels that stitching only partly joins, or joins into a sheet, stays as it
-// was given and goes to the proxy. A model of closed parts (no rim) is never touched.
-void join_torn_pieces(Mesh& mesh, std::vector<int>& component, PreparedSurface& out,
-                      const StopRequested& stop) {
+// was given and goes to the proxy. A model of closed parts (no rim) is never touched. Returns
+// whether the mesh changed; `edges` are the mesh's as given.
+bool join_torn_pieces(Mesh& mesh, const MeshEdges& edges, std::vector<int>& component,
+                      PreparedSurface& out, const StopRequested& stop) {
   if (out.components < 2 || out.clean.nonmanifold_edges > 0 || out.clean.boundary_edges == 0)
-    return;
+    return false;
   const double diagonal = (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).norm();
   Mesh joined = mesh;
   CleanReport report = out.clean;
   std::vector<int> piece = component;
   std::size_t pieces = out.components, pairs = 0, set_aside = 0;
-  const Mesh moved =
-      stitch_pieces(mesh, mesh_edges(mesh.F, stop), component, kTearGap * diagonal, &pairs, stop);
+  const Mesh moved = stitch_pieces(mesh, edges, component, kTearGap * diagonal, &pairs, stop);
   if (pairs > 0) {
     joined = clean_again(moved, report, stop);
     // A stitch that pinched a few rims together (a rim vertex snapped where two sides met)
@@ -93,7 +93,7 @@ void join_torn_pieces(Mesh& mesh, std::vector<int>& component, PreparedSurface& 
       if (report.nonmanifold_edges * 1000 <= std::size_t(edges.count()))
         joined = clean_again(without_nonmanifold_faces(joined, edges), report, stop);
     }
-    if (report.nonmanifold_edges > 0) return;
+    if (report.nonmanifold_edges > 0) return false;
     pieces = std::size_t(vertex_components(joined, piece));
   }
   std::size_t tubes = 0;
@@ -123,8 +123,8 @@ void join_torn_pieces(Mesh& mesh, std::vector<int>& component, PreparedSurface& 
     area = component_areas(joined, piece, pieces);
     total = std::accumulate(area.begin(), area.end(), 0.0);
   }
-  if (pieces > 1 && area[1] >= 0.01 * total) return;
-  if (wide_open(boundary_length(joined, mesh_edges(joined.F, stop)), total)) return;
+  if (pieces > 1 && area[1] >= 0.01 * total) return false;
+  if (wide_open(boundary_length(joined, mesh_edges(joined.F, stop)), total)) return false;
   mesh = std::move(joined);
   component = std::move(piece);
   out.clean = report;
@@ -132,6 +132,7 @@ void join_torn_pieces(Mesh& mesh, std::vector<int>& component, PreparedSurface& 
   out.stitched_pairs = pairs;
   out.bridged_pieces = tubes;
   out.set_aside_pieces = set_aside;
+  return true;
 }
 
 }  // namespace
@@ -139,7 +140,9 @@ void join_torn_pieces(Mesh& mesh, std::vector<int>& component, PreparedSurface& 
 PreparedSurface prepare_surface(const Mesh& input, const BuildOptions& options,
                                 const StopRequested& stop) {
   PreparedSurface out;
-  Mesh mesh = clean_mesh(input, &out.clean, stop);
+  // The cleaning's edge table serves the posed mesh too: the pose moves vertices and at most
+  // turns faces over (below). Rebuilt when torn pieces are joined or holes filled.
+  Mesh mesh = clean_mesh(input, &out.clean, stop, &out.posed_edges);
   // Whether the surface is in pieces, and how open it is, before any hole is filled: both
   // ratios below are the same before and after the pose.
   std::vector<int> component;
@@ -147,16 +150,15 @@ PreparedSurface prepare_surface(const Mesh& input, const BuildOptions& options,
   // Between the steps below, each a pass or two over the faces (a few hundred milliseconds
   // together on millions of them).
   check_interrupt(stop);
-  if (options.holes == HoleKind::Fill) join_torn_pieces(mesh, component, out, stop);
+  if (options.holes == HoleKind::Fill &&
+      join_torn_pieces(mesh, out.posed_edges, component, out, stop))
+    out.posed_edges = mesh_edges(mesh.F, stop);
   // Components are numbered by decreasing area: the second one tells whether the surface is
   // in pieces or merely carries specks.
   const std::vector<double> piece_area = component_areas(mesh, component, out.components);
   const double total = std::accumulate(piece_area.begin(), piece_area.end(), 0.0);
   const double second = piece_area.size() > 1 ? piece_area[1] : 0.0;
   check_interrupt(stop);
-  // The pose moves vertices and at most turns faces over (below): these edges serve the posed
-  // mesh too (recomputed if holes are filled, which adds faces).
-  out.posed_edges = mesh_edges(mesh.F, stop);
   const MeshEdges& edges = out.posed_edges;
   const double boundary = boundary_length(mesh, edges);
   check_interrupt(stop);
