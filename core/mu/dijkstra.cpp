@@ -140,23 +140,27 @@ void shortest_steps(const SurfaceGraph& g, int source, BucketScratch& s,
   s.dist.assign(n, kUnreached);
   // A run that ends normally leaves every bucket empty; one stopped by a cancel does not.
   if (!s.empty)
-    for (auto& b : s.buckets) b.clear();
+    for (auto& b : s.buckets) b.size = 0;
   s.empty = false;
   // Locals, not members: the stores into dist[] below could alias the scratch's fields, so the
   // compiler would otherwise reload the mask and the buckets' address at every relaxation.
   std::uint32_t* const dist = s.dist.data();
   const std::uint64_t* const arc = s.arc.data();
   const int* const offset = g.offset.data();
-  std::vector<int>* const buckets = s.buckets.data();
+  BucketScratch::Bucket* const buckets = s.buckets.data();
   const std::uint64_t mask = s.mask;
   dist[source] = 0;
-  buckets[0].push_back(source);
+  auto push = [](BucketScratch::Bucket& b, int v, bool counted) {
+    if (b.size == b.slots.size()) b.slots.resize(std::max<std::size_t>(64, 2 * b.size));
+    b.slots[b.size] = v;
+    b.size += counted;
+  };
+  push(buckets[0], source, true);
   std::size_t pending = 1, pops = 0;
   for (std::uint64_t current = 0; pending > 0; ++current) {
-    std::vector<int>& bucket = buckets[current & mask];
-    while (!bucket.empty()) {
-      const int v = bucket.back();
-      bucket.pop_back();
+    BucketScratch::Bucket& bucket = buckets[current & mask];
+    while (bucket.size > 0) {
+      const int v = bucket.slots[--bucket.size];
       --pending;
       if (dist[v] != current) continue;  // a stale entry
       if ((++pops & 8191) == 0) check_interrupt(stop);
@@ -165,11 +169,11 @@ void shortest_steps(const SurfaceGraph& g, int source, BucketScratch& s,
         const std::uint64_t a = arc[k];
         const auto w = std::uint32_t(a);
         const std::uint64_t nd = current + (a >> 32);
-        if (nd < dist[w]) {
-          dist[w] = std::uint32_t(nd);
-          buckets[nd & mask].push_back(int(w));
-          ++pending;
-        }
+        const std::uint32_t old = dist[w];
+        const bool better = nd < old;
+        dist[w] = better ? std::uint32_t(nd) : old;
+        push(buckets[nd & mask], int(w), better);
+        pending += better;
       }
     }
   }

@@ -22,9 +22,16 @@ void shortest_paths(const SurfaceGraph& graph, const std::vector<int>& sources,
 constexpr std::uint32_t kUnreached = std::numeric_limits<std::uint32_t>::max();
 
 struct BucketScratch {
+  // A bucket's entries are its first `size` slots. A relaxation writes its node into the next
+  // slot whether or not it improved the distance and counts it only if it did: no branch on
+  // the comparison, which goes either way about as often (the slots grow, rarely, when full).
+  struct Bucket {
+    std::vector<int> slots;
+    std::size_t size = 0;
+  };
   // A ring of 2^k buckets, more than the longest quantised edge: a node's tentative distance is
   // at most that far past the bucket being emptied, so indices masked by `mask` never collide.
-  std::vector<std::vector<int>> buckets;
+  std::vector<Bucket> buckets;
   std::size_t mask = 0;
   // Per graph edge, in the graph's order: the target in the low half, the quantised length in
   // the high half (one load per relaxation).
