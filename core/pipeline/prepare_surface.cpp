@@ -73,8 +73,8 @@ bool wide_open(double boundary, double area) {
 // only when that leaves one closed-but-for-holes surface (specks under 1% aside, not wide open):
 // a soup of open panels that stitching only partly joins, or joins into a sheet, stays as it
 // was given and goes to the proxy. A model of closed parts (no rim) is never touched. Returns
-// whether the mesh changed; `edges` are the mesh's as given.
-bool join_torn_pieces(Mesh& mesh, const MeshEdges& edges, std::vector<int>& component,
+// whether the mesh changed; `mesh_edges_given` are the mesh's as given.
+bool join_torn_pieces(Mesh& mesh, const MeshEdges& mesh_edges_given, std::vector<int>& component,
                       PreparedSurface& out, const StopRequested& stop) {
   if (out.components < 2 || out.clean.nonmanifold_edges > 0 || out.clean.boundary_edges == 0)
     return false;
@@ -83,15 +83,16 @@ bool join_torn_pieces(Mesh& mesh, const MeshEdges& edges, std::vector<int>& comp
   CleanReport report = out.clean;
   std::vector<int> piece = component;
   std::size_t pieces = out.components, pairs = 0, set_aside = 0;
-  const Mesh moved = stitch_pieces(mesh, edges, component, kTearGap * diagonal, &pairs, stop);
+  const Mesh moved =
+      stitch_pieces(mesh, mesh_edges_given, component, kTearGap * diagonal, &pairs, stop);
   if (pairs > 0) {
     joined = clean_again(moved, report, stop);
     // A stitch that pinched a few rims together (a rim vertex snapped where two sides met)
     // leaves a handful of fins: their faces go, and the small holes are filled below.
     if (report.nonmanifold_edges > 0) {
-      const MeshEdges edges = mesh_edges(joined.F, stop);
-      if (report.nonmanifold_edges * 1000 <= std::size_t(edges.count()))
-        joined = clean_again(without_nonmanifold_faces(joined, edges), report, stop);
+      const MeshEdges joined_edges = mesh_edges(joined.F, stop);
+      if (report.nonmanifold_edges * 1000 <= std::size_t(joined_edges.count()))
+        joined = clean_again(without_nonmanifold_faces(joined, joined_edges), report, stop);
     }
     if (report.nonmanifold_edges > 0) return false;
     pieces = std::size_t(vertex_components(joined, piece));
