@@ -19,10 +19,11 @@ std::size_t heap_bytes_in_use();
 
 // A hook that asks `stop` first, then compares the heap in use with its level when the hook was
 // made: more than `max_bytes` above it throws MemoryLimitError ("... allocated, more than the build
-// memory cap of ..."). Polled where `stop` is (poll_interrupt), but a reading of the heap is
-// taken only once heap_check_wait(the last reading's cost) has passed since it, so a build
-// overshoots the cap by at most what it allocates between two readings. max_bytes 0, or no
-// tracking, returns `stop`.
+// memory cap of ..."). Polled where `stop` is (poll_interrupt). The level at the start is a fresh
+// reading; after it, the hook compares the process's latest reading, and a fresh one is taken
+// (by whichever hook polls first) only once heap_check_wait(the last reading's cost) has passed:
+// builds on several threads share the readings, and a build overshoots the cap by at most what
+// the process allocates between two readings. max_bytes 0, or no tracking, returns `stop`.
 StopRequested bounded_by_heap(StopRequested stop, std::size_t max_bytes);
 
 // How long the hook waits after a reading of the heap that took `cost`: 20 times as long, so that

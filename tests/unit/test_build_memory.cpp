@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstring>
 #include <memory>
+#include <thread>
 
 #include "common/errors.hpp"
 #include "common/heap_usage.hpp"
@@ -168,6 +169,37 @@ TEST(BuildMemory, TheHookReadsTheHeapOnlyAfterItsWait) {
   for (int i = 0; i < 1000; ++i) (void)heap_bytes_in_use();
   const auto per_reading = (std::chrono::steady_clock::now() - reading_start) / 1000;
   EXPECT_LT(polls, 1000000 * per_reading / 4);
+}
+
+TEST(BuildMemory, HooksShareTheProcesssReadings) {
+  if (!heap_tracking_available()) GTEST_SKIP() << "no heap tracking in this build";
+  const StopRequested first = bounded_by_heap({}, 32 * kMB);
+  const StopRequested second = bounded_by_heap({}, 32 * kMB);
+  std::unique_ptr<char[]> block(new char[64 * kMB]);
+  std::memset(block.get(), 1, 64 * kMB);
+  std::this_thread::sleep_for(std::chrono::milliseconds(60));  // past any wait
+  EXPECT_THROW(first(), MemoryLimitError);
+  // Stopped too, by the first one's reading or, if one is due already, by its own.
+  EXPECT_THROW(second(), MemoryLimitError);
+}
+
+TEST(BuildMemory, AHookMeasuresFromItsOwnStart) {
+  if (!heap_tracking_available()) GTEST_SKIP() << "no heap tracking in this build";
+  std::unique_ptr<char[]> block(new char[64 * kMB]);
+  std::memset(block.get(), 1, 64 * kMB);
+  const StopRequested before_free = bounded_by_heap({}, 32 * kMB);
+  block.reset();
+  // Made after the free: the process's readings from before it (64 MB higher) are not its level.
+  const StopRequested after_free = bounded_by_heap({}, 32 * kMB);
+  std::this_thread::sleep_for(std::chrono::milliseconds(60));
+  EXPECT_FALSE(before_free());
+  EXPECT_FALSE(after_free());
+  block.reset(new char[64 * kMB]);
+  std::memset(block.get(), 1, 64 * kMB);
+  std::this_thread::sleep_for(std::chrono::milliseconds(60));
+  EXPECT_THROW(after_free(), MemoryLimitError);
+  // The first hook's level held the block: the new one is no growth past its cap.
+  EXPECT_FALSE(before_free());
 }
 
 TEST(BuildMemory, ABuildWhoseHeapPassesTheCapIsStopped) {
