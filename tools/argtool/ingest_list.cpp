@@ -27,9 +27,47 @@ std::string lower(std::string s) {
   return s;
 }
 
-}  // namespace
+// The items' strings again, allocated one after another once every temporary of the listing is
+// freed. Listed as they are, each item's strings sit between blocks the listing freed (paths,
+// map nodes, catalogue records): a folder of 100,000 meshes left 100,000 free chunks, and glibc's
+// mallinfo2, which the build's memory cap reads (core/common/heap_usage.cpp), walks every one
+// of them: 3 ms a reading, a tenth of an ingest's time. Copied through one flat buffer, the
+// freed blocks merge and the copies take consecutive memory.
+IngestList repacked(IngestList list) {
+  std::string chars;
+  std::vector<std::size_t> ends;  // of each string in chars: file, path, then the fields
+  const std::size_t fields = list.columns.size();
+  for (const IngestItem& item : list.items) {
+    chars += item.file;
+    ends.push_back(chars.size());
+    chars += item.path;
+    ends.push_back(chars.size());
+    for (const std::string& field : item.fields) {
+      chars += field;
+      ends.push_back(chars.size());
+    }
+  }
+  const std::size_t n = list.items.size();
+  std::vector<IngestItem>().swap(list.items);
+  list.items.reserve(n);
+  std::size_t at = 0, e = 0;
+  const auto next = [&] {
+    std::string s = chars.substr(at, ends[e] - at);
+    at = ends[e++];
+    return s;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    IngestItem item;
+    item.file = next();
+    item.path = next();
+    item.fields.reserve(fields);
+    for (std::size_t k = 0; k < fields; ++k) item.fields.push_back(next());
+    list.items.push_back(std::move(item));
+  }
+  return list;
+}
 
-IngestList list_ingest(const std::string& dir, const std::string& catalogue) {
+IngestList gather_items(const std::string& dir, const std::string& catalogue) {
   IngestList list;
   const fs::path base = fs::absolute(dir).lexically_normal();
   std::map<std::string, std::size_t> item_of;  // relative path -> index in items
@@ -79,6 +117,12 @@ IngestList list_ingest(const std::string& dir, const std::string& catalogue) {
     item.fields[file_column] = item.file;
   }
   return list;
+}
+
+}  // namespace
+
+IngestList list_ingest(const std::string& dir, const std::string& catalogue) {
+  return repacked(gather_items(dir, catalogue));
 }
 
 }  // namespace argtool
