@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <string>
 
 namespace arg {
 
@@ -38,6 +40,32 @@ bool is_mixing_weight(const char* name) {
   for (const Knob& k : kKnobs)
     if (std::string(name) == k.name) return k.mixing;
   return false;
+}
+
+Weights search_one_weight(const Weights& start, const std::string& name,
+                          const std::vector<float>& values,
+                          const std::function<double(const Weights&)>& objective) {
+  const Knob* knob = nullptr;
+  for (const Knob& k : kKnobs)
+    if (name == k.name) knob = &k;
+  if (!knob) throw std::invalid_argument("no weight '" + name + "' to search");
+  if (values.empty()) throw std::invalid_argument("no values to try for " + name);
+  Weights best = start;
+  double best_score = 0;
+  bool found = false;
+  for (float value : values) {
+    if (!(value >= 0)) throw std::invalid_argument(name + " must be at least 0");
+    if (knob->mixing)
+      value = mixing_weight(
+          std::clamp(mixing_steps(value), 0,
+                     knob->member == &Weights::graph_on_proxy ? kMaxGraphOnProxySteps : 255));
+    Weights w = start;
+    w.*knob->member = value;
+    if (!valid(w)) continue;
+    const double score = objective(w);
+    if (!found || score > best_score) best = w, best_score = score, found = true;
+  }
+  return best;
 }
 
 Weights search_weights(const Weights& start, const std::function<double(const Weights&)>& objective,

@@ -3,6 +3,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "match/weights.hpp"
 
@@ -28,6 +29,16 @@ Weights search_weights(const Weights& start, const std::function<double(const We
 // would only follow the noise of the training sets' scores.
 Weights grid_search_mixing(const Weights& start,
                            const std::function<double(const Weights&)>& objective);
+
+// The weight `name` (one the coordinate search visits: graph, panorama, spectrum,
+// graph_on_proxy, alpha_s ... eps_l) set to each of `values` in turn, every other weight as in
+// `start`; returns the best by `objective`, the first value listed on ties (list the value that
+// leaves a term out first, so a term has to earn its weight). Mixing weights are rounded to
+// their grid; a value that leaves no sim or no mixing weight positive is skipped. Throws
+// std::invalid_argument for another name, no values or a value below 0.
+Weights search_one_weight(const Weights& start, const std::string& name,
+                          const std::vector<float>& values,
+                          const std::function<double(const Weights&)>& objective);
 
 // Whether the named weight only mixes SIM's terms (so the graph matching needs no rerun).
 bool is_mixing_weight(const char* name);

@@ -390,4 +390,36 @@ PY
 status=$?
 check "view-data --material without a NAME is refused, naming the option" bash -c \
   "test $status -ne 0 && grep -q -- '--material' '$work/material.err'"
+# 14. tune --only: one weight chosen per leave-one-set-out fold, the others held where each fold
+# started (--start-per-set); a weight it cannot search is refused before any build.
+"$argtool" gen --out "$work/t1" --per-class 2 --class cup --class torus --labels > /dev/null 2>&1
+"$argtool" gen --out "$work/t2" --per-class 2 --class vase --class fourleg --labels \
+  > /dev/null 2>&1
+printf 't1 arg panorama=1\nt2 arg panorama=2\n' > "$work/tstart.txt"
+"$argtool" tune --labels "$work/t1/labels.csv" --labels "$work/t2/labels.csv" --threads 2 \
+  --start-per-set "$work/tstart.txt" --only lambda_3=0,1.5 --fold-weights "$work/tfolds.txt" \
+  > "$work/tune.txt" 2> "$work/tune.err"
+status=$?
+check "tune --only runs both folds and writes their weights (exit 0)" bash -c "
+  test $status -eq 0 && test \$(grep -c '^held out, learnt weights' '$work/tune.txt') -eq 2 &&
+  test \$(wc -l < '$work/tfolds.txt') -eq 2"
+check "each fold keeps the weights it started from but the one searched" awk '
+  $1 == "t1" && / panorama=1 / && /lambda_3=(0|1\.5) / { n++ }
+  $1 == "t2" && / panorama=2 / && /lambda_3=(0|1\.5) / { n++ } END { exit n != 2 }' \
+  "$work/tfolds.txt"
+check "each value tried is reported with its training objective" bash -c "
+  test \$(grep -c 'training objective' '$work/tune.err') -eq 4"
+SECONDS=0
+"$argtool" tune --labels "$work/t1/labels.csv" --labels "$work/t2/labels.csv" \
+  --only lambda_9=0,1 > /dev/null 2> "$work/tune_bad.err"
+status=$?
+check "tune --only with a weight it cannot search fails at once, naming it" bash -c "
+  test $status -ne 0 && grep -q \"no weight 'lambda_9'\" '$work/tune_bad.err' &&
+  ! grep -q '^build ' '$work/tune_bad.err' && test $SECONDS -lt 10"
+"$argtool" tune --labels "$work/t1/labels.csv" --labels "$work/t2/labels.csv" \
+  --only lambda_3=1,x > /dev/null 2> "$work/tune_bad2.err"
+status=$?
+check "a value that is not a weight is refused, naming it" bash -c "
+  test $status -ne 0 && grep -q \"'x' is not a weight\" '$work/tune_bad2.err'"
+
 echo "1..$n"

@@ -1,5 +1,6 @@
 // argtool tune: learn the weights on some models or sets, report the scores on the ones held out.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -25,7 +26,7 @@ namespace {
 
 struct TuneArgs {
   std::vector<std::string> labels;
-  std::string root, cache, start = "arg", objective = "map", fold_weights;
+  std::string root, cache, start = "arg", objective = "map", fold_weights, start_per_set, only;
   int folds = 2, rounds = 3;
   bool mixing_only = false, proxy_copies = false;
   int threads = int(std::max(1u, std::thread::hardware_concurrency()));
@@ -118,6 +119,38 @@ std::string row(const char* what, const std::string& set, const arg::RetrievalSc
   return line;
 }
 
+// --only's weight and the values to try for it.
+struct OnlyWeight {
+  std::string name;  // empty: no --only
+  std::vector<float> values;
+};
+
+OnlyWeight parse_only(const std::string& text) {
+  OnlyWeight only;
+  if (text.empty()) return only;
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
+    throw std::runtime_error("--only wants NAME=V1,V2,...: got '" + text + "'");
+  only.name = text.substr(0, eq);
+  std::size_t at = eq + 1;
+  while (at <= text.size()) {
+    const auto comma = std::min(text.find(',', at), text.size());
+    const std::string item = text.substr(at, comma - at);
+    std::size_t used = 0;
+    float value = 0;
+    try {
+      value = std::stof(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (item.empty() || used != item.size() || !std::isfinite(value) || value < 0)
+      throw std::runtime_error("--only: '" + item + "' is not a weight (a number, at least 0)");
+    only.values.push_back(value);
+    at = comma + 1;
+  }
+  return only;
+}
+
 std::vector<int> everyone(const Set& s) {
   std::vector<int> all(s.models.size());
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = int(i);
@@ -151,6 +184,14 @@ const bool registered = argtool::register_command(
                    "also build every set on watertight proxies (surface=proxy) and train on "
                    "those copies too (never on the copy of a held-out set), so that "
                    "graph_on_proxy is learnt from proxies of the training shapes");
+      app.add_option("--only", a->only,
+                     "search one weight over listed values, the others held as started: "
+                     "NAME=V1,V2,... (ties go to the first value: list the one without the term "
+                     "first)");
+      app.add_option("--start-per-set", a->start_per_set,
+                     "each leave-one-set-out fold starts from its held-out set's line of this "
+                     "file (what --fold-weights writes); the final search starts from --start")
+          ->check(CLI::ExistingFile);
       app.add_option("--threads", a->threads, "worker threads")->check(CLI::Range(1, 256));
       app.add_option("--cache", a->cache, "folder caching built ARGs between runs");
       app.add_option("--fold-weights", a->fold_weights,
@@ -164,6 +205,16 @@ const bool registered = argtool::register_command(
           throw std::runtime_error("--proxy-copies needs several --labels sets (leave one out)");
         if (!a->fold_weights.empty() && a->labels.size() < 2)
           throw std::runtime_error("--fold-weights needs several --labels sets (leave one out)");
+        // Refused before the builds, which take minutes.
+        const OnlyWeight only = parse_only(a->only);
+        if (!only.name.empty()) {
+          if (a->mixing_only)
+            throw std::runtime_error("--only and --mixing-only are two searches: give one");
+          arg::search_one_weight(arg::parse_weights(a->start), only.name, only.values,
+                                 [](const arg::Weights&) { return 0.0; });
+        }
+        if (!a->start_per_set.empty() && a->labels.size() < 2)
+          throw std::runtime_error("--start-per-set needs several --labels sets (leave one out)");
         if (!a->cache.empty()) fs::create_directories(a->cache);
         const std::size_t given = a->labels.size();
         std::vector<Set> sets(a->proxy_copies ? 2 * given : given);
@@ -193,10 +244,23 @@ const bool registered = argtool::register_command(
         }
         GraphCache graphs(sets, a->threads);
         const arg::Weights start = arg::parse_weights(a->start);
+        std::map<std::string, arg::Weights> fold_start;
+        if (!a->start_per_set.empty()) {
+          for (const arg::SetWeights& f :
+               arg::parse_set_weights(argtool::read_file_bytes(a->start_per_set)))
+            fold_start[f.set] = arg::parse_weights(f.weights);
+          for (std::size_t k = 0; k < given; ++k)
+            if (!fold_start.count(sets[k].name))
+              throw std::runtime_error(a->start_per_set + ": no weights for the fold holding out " +
+                                       sets[k].name);
+        }
         auto say = [](const std::string& line) { std::fprintf(stderr, "  %s\n", line.c_str()); };
-        auto search = [&](const std::function<double(const arg::Weights&)>& objective) {
-          return a->mixing_only ? arg::grid_search_mixing(start, objective)
-                                : arg::search_weights(start, objective, a->rounds, 1e-4, say);
+        auto search = [&](const std::function<double(const arg::Weights&)>& objective,
+                          const arg::Weights& from) {
+          if (!only.name.empty())
+            return arg::search_one_weight(from, only.name, only.values, objective);
+          return a->mixing_only ? arg::grid_search_mixing(from, objective)
+                                : arg::search_weights(from, objective, a->rounds, 1e-4, say);
         };
         std::vector<std::string> report;
 
@@ -212,9 +276,11 @@ const bool registered = argtool::register_command(
             for (std::size_t i = 0; i < s.models.size(); ++i)
               (fold[i] == f ? test : train).push_back(int(i));
             std::fprintf(stderr, "fold %d: training on %zu models\n", f + 1, train.size());
-            const arg::Weights learnt = search([&](const arg::Weights& w) {
-              return objective_of(scores_within(s, train, w, graphs, 0), a->objective);
-            });
+            const arg::Weights learnt = search(
+                [&](const arg::Weights& w) {
+                  return objective_of(scores_within(s, train, w, graphs, 0), a->objective);
+                },
+                start);
             const double held = scores_within(s, test, learnt, graphs, 0).map;
             const double base = scores_within(s, test, start, graphs, 0).map;
             held_sum += held, base_sum += base;
@@ -232,15 +298,23 @@ const bool registered = argtool::register_command(
             std::vector<std::size_t> train;
             for (std::size_t k = 0; k < sets.size(); ++k)
               if (k != out && sets[k].copy_of != int(out)) train.push_back(k);
-            const arg::Weights learnt = search([&](const arg::Weights& w) {
-              double sum = 0;
-              for (std::size_t k : train)
-                sum += objective_of(scores_within(sets[k], everyone(sets[k]), w, graphs, k),
-                                    a->objective);
-              return sum / double(train.size());
-            });
+            const auto found = fold_start.find(sets[out].name);
+            const arg::Weights& from = found == fold_start.end() ? start : found->second;
+            const arg::Weights learnt = search(
+                [&](const arg::Weights& w) {
+                  double sum = 0;
+                  for (std::size_t k : train)
+                    sum += objective_of(scores_within(sets[k], everyone(sets[k]), w, graphs, k),
+                                        a->objective);
+                  const double mean = sum / double(train.size());
+                  if (!only.name.empty())
+                    std::fprintf(stderr, "  %s: training objective %.4f\n",
+                                 arg::format_weights(w).c_str(), mean);
+                  return mean;
+                },
+                from);
             const auto held = scores_within(sets[out], everyone(sets[out]), learnt, graphs, out);
-            const auto base = scores_within(sets[out], everyone(sets[out]), start, graphs, out);
+            const auto base = scores_within(sets[out], everyone(sets[out]), from, graphs, out);
             report.push_back(row("held out, learnt weights", sets[out].name, held));
             report.push_back(row("held out, start weights", sets[out].name, base));
             report.push_back("  learnt on the other sets: " + arg::format_weights(learnt));
@@ -254,13 +328,15 @@ const bool registered = argtool::register_command(
             argtool::write_file_bytes(a->fold_weights, arg::format_set_weights(folds));
         }
         std::fprintf(stderr, "final: training on every model of every set\n");
-        const arg::Weights final_weights = search([&](const arg::Weights& w) {
-          double sum = 0;
-          for (std::size_t k = 0; k < sets.size(); ++k)
-            sum +=
-                objective_of(scores_within(sets[k], everyone(sets[k]), w, graphs, k), a->objective);
-          return sum / double(sets.size());
-        });
+        const arg::Weights final_weights = search(
+            [&](const arg::Weights& w) {
+              double sum = 0;
+              for (std::size_t k = 0; k < sets.size(); ++k)
+                sum += objective_of(scores_within(sets[k], everyone(sets[k]), w, graphs, k),
+                                    a->objective);
+              return sum / double(sets.size());
+            },
+            start);
         for (std::size_t k = 0; k < sets.size(); ++k)
           std::printf("%s\n",
                       row("training (all sets)", sets[k].name,
