@@ -34,6 +34,13 @@ bool valid(const Weights& w) {
          w.graph + w.panorama + w.spectrum > 0;
 }
 
+// A mixing weight rounded to its grid (the SQL type's byte); other weights as they are.
+float on_grid(const Knob& k, float value) {
+  if (!k.mixing) return value;
+  const int most = k.member == &Weights::graph_on_proxy ? kMaxGraphOnProxySteps : 255;
+  return mixing_weight(std::clamp(mixing_steps(value), 0, most));
+}
+
 }  // namespace
 
 bool is_mixing_weight(const char* name) {
@@ -55,10 +62,7 @@ Weights search_one_weight(const Weights& start, const std::string& name,
   bool found = false;
   for (float value : values) {
     if (!(value >= 0)) throw std::invalid_argument(name + " must be at least 0");
-    if (knob->mixing)
-      value = mixing_weight(
-          std::clamp(mixing_steps(value), 0,
-                     knob->member == &Weights::graph_on_proxy ? kMaxGraphOnProxySteps : 255));
+    value = on_grid(*knob, value);
     Weights w = start;
     w.*knob->member = value;
     if (!valid(w)) continue;
@@ -79,11 +83,7 @@ Weights search_weights(const Weights& start, const std::function<double(const We
       if (mixing_only && !k.mixing) continue;
       const float current = best.*k.member;
       float trials[3] = {current * 0.5f, current * 2.0f, current == 0 ? 0.1f : 0.0f};
-      if (k.mixing)
-        for (float& t : trials)
-          t = mixing_weight(
-              std::clamp(mixing_steps(t), 0,
-                         k.member == &Weights::graph_on_proxy ? kMaxGraphOnProxySteps : 255));
+      for (float& t : trials) t = on_grid(k, t);
       for (float value : trials) {
         if (value == current) continue;
         Weights w = best;
