@@ -1,6 +1,9 @@
 -- arg 0.3.0: an arg_ivf index on an arg column itself (one CREATE INDEX, no sketch column);
 -- ORDER BY descr <~> q LIMIT k takes it and returns rows in exact SIM order. arg_sim_terms
--- explains a SIM term by term.
+-- explains a SIM term by term. The `arg` preset weighs cords 0.5 and curvature 12 (0.2.0: 1
+-- and 3), so SIM values differ from 0.2.0's; the new `part` preset keeps 0.2.0's, and
+-- arg_part_match uses it by default. An arg_weights value stored before keeps the numbers it
+-- was given.
 
 \echo Use "ALTER EXTENSION arg UPDATE TO '0.3.0'" to load this file. \quit
 
@@ -212,3 +215,17 @@ CREATE FUNCTION arg_sim_terms(a arg, b arg, weights arg_weights DEFAULT 'arg')
 
 COMMENT ON FUNCTION arg_sim_terms(arg, arg, arg_weights) IS
   'SIM(a, b, weights) term by term: graph, panorama, spectrum (weight, distance, share of SIM; the shares add up to arg_sim), then the graph''s features';
+
+-- Whole models rank best with the `arg` preset's curvature and cords, a part against parts with
+-- the `part` preset's (docs/BENCHMARKS.md, "Part matching").
+COMMENT ON TYPE arg_weights IS
+  'weights of matching and SIM: a preset (arg, part, mrg, graph, shape, colour) and/or key=value pairs '
+  '(alpha_l beta_l gamma_l delta_l eps_l alpha_s beta_s lambda_1..lambda_4 graph panorama spectrum '
+  'graph_on_proxy norm tung groups, or the readable names loss_area loss_length loss_radius loss_theta '
+  'loss_phi area length volume cords curvature colour)';
+
+CREATE OR REPLACE FUNCTION arg_part_match(query arg, level int, node int, candidate arg,
+                                          weights arg_weights DEFAULT 'part')
+  RETURNS TABLE (candidate_level int, candidate_node int, score float8)
+  AS 'MODULE_PATHNAME', 'arg_part_match' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE
+  COST 1500 ROWS 5;

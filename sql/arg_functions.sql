@@ -109,6 +109,14 @@ SELECT bool_and(ok) AS ordered FROM (
   FROM shapes s,
        arg_part_match((SELECT descr FROM shapes WHERE name = 'cup_0'), 2, 0, s.descr)
          WITH ORDINALITY AS p(candidate_level, candidate_node, score, ord)) o;
+-- Its default weights are the `part` preset (0.2.0's feature weights), not `arg`'s.
+SELECT strpos(pg_get_function_arguments('arg_part_match'::regproc),
+              format('DEFAULT %L::arg_weights', 'part'::arg_weights)) > 0 AS default_part,
+       (SELECT array_agg(p ORDER BY s.name, p) FROM shapes s,
+          arg_part_match((SELECT descr FROM shapes WHERE name = 'cup_0'), 2, 0, s.descr) p)
+       = (SELECT array_agg(p ORDER BY s.name, p) FROM shapes s,
+          arg_part_match((SELECT descr FROM shapes WHERE name = 'cup_0'), 2, 0, s.descr, 'part') p)
+         AS same_as_part;
 
 -- arg_svg: one level of the graph as a self-contained SVG picture, one circle per node.
 SELECT name, left(svg, 4) AS starts,

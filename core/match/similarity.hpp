@@ -78,11 +78,13 @@ struct PartMatch {
 // with the nodes' own attributes, so relative size counts) reaches `threshold` and whose
 // number of neighbours differs by at most one. Each is scored by the mean of the SIM of the
 // renormalised sub-graphs below the two nodes and 1 - the node similarity; best (lowest)
-// first. `node` is the query node's index within `level`.
+// first. `node` is the query node's index within `level`. The weights default to the `part`
+// preset, with which parts find their kin better than with the `arg` preset's (weights.hpp).
 // Throws InputError when level or node is out of range, Interrupted when `stop` says so (it is
 // polled once per candidate node).
 std::vector<PartMatch> part_match(const ArgGraph& query, int level, int node,
-                                  const ArgGraph& candidate, const Weights& weights = {},
+                                  const ArgGraph& candidate,
+                                  const Weights& weights = weights_preset("part"),
                                   double threshold = 0.5, const StopRequested& stop = {});
 
 }  // namespace arg

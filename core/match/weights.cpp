@@ -75,6 +75,11 @@ struct Preset {
 };
 constexpr Preset kPresets[] = {
     {"arg", [](Weights&) {}},
+    {"part",  // 0.1.0's feature weights: node against node, they find a part's kin better
+     [](Weights& w) {
+       w.lambda_2 = 1.0f;
+       w.lambda_3 = 3.0f;
+     }},
     {"mrg",  // Hilaga et al.: topology only, equal weights
      [](Weights& w) {
        w.alpha_l = w.beta_l = 0.5f;
@@ -106,6 +111,14 @@ bool is_mixing(const Field& f) {
 // The largest number of kMixingStep steps a mixing weight may take (its storage in SQL).
 int max_steps(const Field& f) {
   return f.member == &Weights::graph_on_proxy ? kMaxGraphOnProxySteps : 255;
+}
+
+// The presets an error message names, "arg, part, ..., colour" ("color" is another spelling).
+std::string preset_names() {
+  std::string text;
+  for (const Preset& p : kPresets)
+    if (std::string_view(p.name) != "color") text.append(text.empty() ? "" : ", ").append(p.name);
+  return text;
 }
 
 bool try_preset(std::string_view name, Weights& w) {
@@ -220,7 +233,7 @@ Weights weights_preset(std::string_view name) {
   Weights w;
   if (!try_preset(name, w))
     throw InputError(std::string(kWhat) + ": unknown preset \"" + std::string(name) +
-                     "\" (expected arg, mrg, graph, shape or colour)");
+                     "\" (expected one of " + preset_names() + ")");
   return w;
 }
 
@@ -236,8 +249,7 @@ Weights parse_weights(std::string_view text) {
     const auto& [key, value] = pairs[i];
     if (value.empty()) {
       if (i != 0 || !try_preset(key, w))
-        throw InputError("weights: \"" + key +
-                         "\" is not a preset (arg, mrg, graph, shape, colour) " +
+        throw InputError("weights: \"" + key + "\" is not a preset (" + preset_names() + ") " +
                          (i != 0 ? "or the preset is not first" : "nor key=value"));
       continue;
     }

@@ -236,7 +236,7 @@ check "part-eval: part matching ranks the parts' sources first, more than whole-
   python3 - "$work/pe.json" << 'PY'
 import json, sys
 rows = {(r["query"], r["method"]): r for r in json.load(open(sys.argv[1]))}
-part = rows[("cut part, level 0", "part arg")]["source_first"]
+part = rows[("cut part, level 0", "part part")]["source_first"]
 whole = rows[("cut part as a whole", "SIM")]["source_first"]
 assert part >= 0.75 and part > whole, (part, whole)
 # The node queried where it lies leaves its model out; the whole model finds its class.

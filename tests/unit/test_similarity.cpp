@@ -122,7 +122,7 @@ TEST(Weights, GraphOnProxyIsAShareOnTheMixingGrid) {
 }
 
 TEST(Weights, TextRoundTripAndPresets) {
-  for (const char* preset : {"arg", "mrg", "graph", "shape", "colour"}) {
+  for (std::string_view preset : weight_presets()) {
     Weights w = weights_preset(preset);
     EXPECT_EQ(parse_weights(format_weights(w)), w) << preset;
     EXPECT_EQ(parse_weights(preset), w);
@@ -189,8 +189,11 @@ TEST(Weights, TheCanonicalTextKeepsThePapersSymbols) {
   }
   EXPECT_EQ(format_weights(weights_preset("arg")),
             "alpha_l=0.3 beta_l=0.15 gamma_l=0.15 delta_l=0.2 eps_l=0.2 alpha_s=0.65 beta_s=0.35 "
-            "lambda_1=0.3 lambda_2=1 lambda_3=3 lambda_4=1 graph=1 panorama=2.5 spectrum=0.75 "
+            "lambda_1=0.3 lambda_2=0.5 lambda_3=12 lambda_4=1 graph=1 panorama=2.5 spectrum=0.75 "
             "graph_on_proxy=0.75 norm=l1 tung=on groups=off");
+  // `part` is `arg` with 0.2.0's cords and curvature, and nothing else.
+  EXPECT_EQ(format_weights(weights_preset("part")),
+            format_weights(parse_weights("arg lambda_2=1 lambda_3=3")));
 }
 
 TEST(Weights, ABareWordIsAPresetAndKeyEqualsValueIsAWeight) {

@@ -9,7 +9,7 @@
 namespace {
 
 struct PartArgs {
-  std::string query, weights = "arg";
+  std::string query, weights = "part";
   std::vector<std::string> candidates;
   int level = 2, node = 0, top = 5;
   double threshold = 0.5;

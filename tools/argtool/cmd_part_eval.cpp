@@ -27,7 +27,7 @@ namespace fs = std::filesystem;
 namespace {
 
 struct PartEvalArgs {
-  std::vector<std::string> labels, presets = {"arg", "mrg"};
+  std::vector<std::string> labels, presets = {"part", "mrg"};
   std::vector<int> query_levels = {0};
   std::string cache, json, parts;
   int level = 2, per_class = 0, min_faces = 200;
@@ -269,7 +269,7 @@ const bool registered = argtool::register_command(
           ->check(CLI::Range(0, 1 << 20));
       app.add_option("--seed", a->seed, "seed of the sample and of the order of non-matches");
       app.add_option("--preset", a->presets,
-                     "weights presets of part matching (repeatable; default arg and mrg)");
+                     "weights presets of part matching (repeatable; default part and mrg)");
       app.add_option("--query-level", a->query_levels,
                      "level of the cut part's own ARG whose largest node is the query "
                      "(repeatable; default 0, the whole part)")

@@ -138,7 +138,7 @@ const bool registered = argtool::register_command(
       app.add_option("b", a->b, "second mesh file")->required()->check(CLI::ExistingFile);
       app.add_option("-o,--output", a->output, "PNG to write")->required();
       app.add_option("--weights", a->weights,
-                     "preset (arg, mrg, graph, shape, colour) or key=value text")
+                     "preset (arg, part, mrg, graph, shape, colour) or key=value text")
           ->capture_default_str();
       app.add_option("--level", a->level, "level whose matched pairs are drawn")
           ->check(CLI::Range(0, arg::kMaxLevels))

@@ -133,7 +133,7 @@ const bool registered = argtool::register_command(
           ->check(CLI::Range(1, 200))
           ->capture_default_str();
       app.add_option("--weights", a->weights,
-                     "preset (arg, mrg, graph, shape, colour) or key=value text")
+                     "preset (arg, part, mrg, graph, shape, colour) or key=value text")
           ->capture_default_str();
       app.add_option("--thumb", a->thumb, "thumbnail size in pixels")
           ->check(CLI::Range(64, 1024))

@@ -21,7 +21,7 @@ const bool registered = argtool::register_command(
       app.add_option("a", a->a, "first model")->required()->check(CLI::ExistingFile);
       app.add_option("b", a->b, "second model")->required()->check(CLI::ExistingFile);
       app.add_option("--weights", a->weights,
-                     "preset (arg, mrg, graph, shape, colour) or key=value text");
+                     "preset (arg, part, mrg, graph, shape, colour) or key=value text");
       app.add_flag("--explain", a->explain, "the terms of SIM and the graph's matched node pairs");
       argtool::add_build_flags(app, a->options);
       return [a] {

@@ -69,8 +69,8 @@ class ArgWeights:
     alpha_s: float = 0.65
     beta_s: float = 0.35
     lambda_1: float = 0.3
-    lambda_2: float = 1.0
-    lambda_3: float = 3.0
+    lambda_2: float = 0.5
+    lambda_3: float = 12.0
     lambda_4: float = 1.0
     graph: float = 1.0
     panorama: float = 2.5
