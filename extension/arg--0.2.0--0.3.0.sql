@@ -216,6 +216,10 @@ CREATE FUNCTION arg_sim_terms(a arg, b arg, weights arg_weights DEFAULT 'arg')
 COMMENT ON FUNCTION arg_sim_terms(arg, arg, arg_weights) IS
   'SIM(a, b, weights) term by term: graph, panorama, spectrum (weight, distance, share of SIM; the shares add up to arg_sim), then the graph''s features';
 
+-- A default of type arg_weights is stored as the value the preset's name read as when the
+-- function was created, by the library of that time: a database made by 0.1.0 or 0.2.0 holds
+-- their weights (0.1.0's the graph alone) behind every DEFAULT 'arg'. Each such function is
+-- created again here, so its default is read by this library and arg_sim(a, b) = a <~> b.
 -- Whole models rank best with the `arg` preset's curvature and cords, a part against parts with
 -- the `part` preset's (docs/BENCHMARKS.md, "Part matching").
 COMMENT ON TYPE arg_weights IS
@@ -223,6 +227,19 @@ COMMENT ON TYPE arg_weights IS
   '(alpha_l beta_l gamma_l delta_l eps_l alpha_s beta_s lambda_1..lambda_4 graph panorama spectrum '
   'graph_on_proxy norm tung groups, or the readable names loss_area loss_length loss_radius loss_theta '
   'loss_phi area length volume cords curvature colour)';
+
+CREATE OR REPLACE FUNCTION arg_sim(a arg, b arg, weights arg_weights DEFAULT 'arg') RETURNS float8
+  AS 'MODULE_PATHNAME', 'arg_sim' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 2000;
+
+CREATE OR REPLACE FUNCTION arg_matches(a arg, b arg, weights arg_weights DEFAULT 'arg')
+  RETURNS TABLE (level int, a_node int, b_node int, match_group int, loss float8, sim float8)
+  AS 'MODULE_PATHNAME', 'arg_matches' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE
+  COST 600 ROWS 40;
+
+CREATE OR REPLACE FUNCTION arg_sketch_distance(a arg_sketch, b arg_sketch,
+                                               weights arg_weights DEFAULT 'arg')
+  RETURNS float8
+  AS 'MODULE_PATHNAME', 'arg_sketch_distance' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 20;
 
 CREATE OR REPLACE FUNCTION arg_part_match(query arg, level int, node int, candidate arg,
                                           weights arg_weights DEFAULT 'part')

@@ -59,7 +59,7 @@ nearest() {
 }
 value_of() { printf 'arg1:%s' "$(base64 -w0 "tests/unit/fixtures/format1/$1.arg")"; }
 
-echo "1..32"
+echo "1..33"
 drop_databases
 q -d postgres -c "CREATE DATABASE $old" -c "CREATE DATABASE $fresh" -c "CREATE DATABASE $restored" \
   >/dev/null || exit 1
@@ -170,6 +170,21 @@ q -d postgres -c "CREATE DATABASE $mid" >/dev/null || exit 1
 q -d $mid >/dev/null <<'SQL' || exit 1
 CREATE EXTENSION cube;
 CREATE EXTENSION arg VERSION '0.2.0';
+-- A database a 0.2.0 library made holds 0.2.0's weights behind DEFAULT 'arg' (a default is
+-- stored as the value it read as then): 'part' reads as they did.
+CREATE OR REPLACE FUNCTION arg_sim(a arg, b arg, weights arg_weights DEFAULT 'part') RETURNS float8
+  AS '$libdir/arg', 'arg_sim' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 2000;
+CREATE OR REPLACE FUNCTION arg_matches(a arg, b arg, weights arg_weights DEFAULT 'part')
+  RETURNS TABLE (level int, a_node int, b_node int, match_group int, loss float8, sim float8)
+  AS '$libdir/arg', 'arg_matches' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 600 ROWS 40;
+CREATE OR REPLACE FUNCTION arg_sketch_distance(a arg_sketch, b arg_sketch,
+                                               weights arg_weights DEFAULT 'part')
+  RETURNS float8
+  AS '$libdir/arg', 'arg_sketch_distance' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 20;
+CREATE OR REPLACE FUNCTION arg_part_match(query arg, level int, node int, candidate arg,
+                                          weights arg_weights DEFAULT 'part')
+  RETURNS TABLE (candidate_level int, candidate_node int, score float8)
+  AS '$libdir/arg', 'arg_part_match' LANGUAGE C IMMUTABLE STRICT PARALLEL SAFE COST 1500 ROWS 5;
 CREATE TABLE objects (id int PRIMARY KEY, descr arg,
                       sk arg_sketch GENERATED ALWAYS AS (arg_sketch(descr)) STORED);
 INSERT INTO objects SELECT i, arg_build(arg_generate_model(c, i::int, 12))
@@ -185,6 +200,11 @@ check "ALTER EXTENSION arg UPDATE from 0.2.0 succeeds" q -d $mid -c "ALTER EXTEN
 check "the catalogue updated from 0.2.0 equals a fresh $current install" \
   diff -u "$work/fresh.txt" <(catalogue $mid)
 check "the 0.2.0 arg_ivf index of sketches answers as before" same "$mid_before" "$(sketch_nearest)"
+check "after it arg_sim's default weights are <~>'s, and arg_matches' are arg_sim's" \
+  same "t|t" "$(q -d $mid -c "SELECT bool_and(arg_sim(a.descr, b.descr) = (a.descr <~> b.descr)),
+                                     bool_and((SELECT array_agg(m ORDER BY m) FROM arg_matches(a.descr, b.descr) m) =
+                                              (SELECT array_agg(m ORDER BY m) FROM arg_matches(a.descr, b.descr, 'arg') m))
+                              FROM objects a, objects b WHERE a.id = 1")"
 check "arg_index_check passes on the 0.2.0 index of sketches" \
   same "6|6" "$(q -d $mid -c "SELECT entries, table_rows FROM arg_index_check('objects_sk')")"
 check "an arg_ivf index on the arg column is taken by the plain query" \
