@@ -225,7 +225,7 @@ COMMENT ON FUNCTION arg_sim_terms(arg, arg, arg_weights) IS
 COMMENT ON TYPE arg_weights IS
   'weights of matching and SIM: a preset (arg, part, mrg, graph, shape, colour) and/or key=value pairs '
   '(alpha_l beta_l gamma_l delta_l eps_l alpha_s beta_s lambda_1..lambda_4 graph panorama spectrum '
-  'graph_on_proxy norm tung groups, or the readable names loss_area loss_length loss_radius loss_theta '
+  'graph_on_proxy level_ratio norm tung groups, or the readable names loss_area loss_length loss_radius loss_theta '
   'loss_phi area length volume cords curvature colour)';
 
 CREATE OR REPLACE FUNCTION arg_sim(a arg, b arg, weights arg_weights DEFAULT 'arg') RETURNS float8

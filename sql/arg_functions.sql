@@ -55,14 +55,19 @@ SELECT w AS weights,
        bool_and(arg_sim(a.descr, b.descr, w::arg_weights) = arg_sim(b.descr, a.descr, w::arg_weights)) AS symmetric,
        bool_and(arg_sim(a.descr, b.descr, w::arg_weights) BETWEEN 0 AND 1) AS in_unit_interval,
        bool_and(arg_sim(a.descr, b.descr, w::arg_weights) > 0 OR a.name = b.name) AS others_positive
-FROM shapes a, shapes b, unnest(ARRAY['arg', 'mrg', 'shape', 'colour']) AS w
+FROM shapes a, shapes b, unnest(ARRAY['arg', 'mrg', 'shape', 'colour', 'arg level_ratio=0.6']) AS w
 GROUP BY w ORDER BY w;
 
 -- Weights change the score: the presets disagree on the same pair, and explicit values equal
 -- to a preset give the same score as the preset.
 SELECT count(DISTINCT arg_sim(a.descr, b.descr, w::arg_weights)) AS distinct_scores
-FROM shapes a, shapes b, unnest(ARRAY['arg', 'mrg', 'shape', 'colour']) AS w
+FROM shapes a, shapes b, unnest(ARRAY['arg', 'mrg', 'shape', 'colour', 'arg level_ratio=0.6']) AS w
 WHERE a.name = 'cup_0' AND b.name = 'vase_0';
+-- level_ratio weighs the levels: at 0 the graph's SIM is the coarsest level's alone, where two
+-- cups differ less than in their details; 1 is the default.
+SELECT arg_sim(a.descr, b.descr, 'graph level_ratio=0') < arg_sim(a.descr, b.descr, 'graph') AS coarse_alike,
+       arg_sim(a.descr, b.descr, 'level_ratio=1') = arg_sim(a.descr, b.descr) AS one_is_default
+FROM shapes a, shapes b WHERE a.name = 'cup_0' AND b.name = 'cup_1';
 SELECT arg_sim(a.descr, b.descr, 'arg') = arg_sim(a.descr, b.descr) AS default_is_arg,
        arg_sim(a.descr, b.descr, 'arg'::arg_weights::text::arg_weights) = arg_sim(a.descr, b.descr) AS explicit_equals_preset
 FROM shapes a, shapes b WHERE a.name = 'cup_0' AND b.name = 'vase_0';

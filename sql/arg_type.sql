@@ -68,12 +68,17 @@ SELECT w::text::arg_weights::text = w::text AS text_round_trip
 FROM (SELECT 'mrg lambda_2=0.123456789'::arg_weights AS w) s;
 CREATE TABLE weight_sets (name text, w arg_weights);
 INSERT INTO weight_sets VALUES ('default', 'arg'), ('topology', 'mrg'), ('custom', 'shape tung=off'),
-  ('proxies', 'arg graph_on_proxy=0.35 groups=on norm=l2');
+  ('proxies', 'arg graph_on_proxy=0.35 groups=on norm=l2'),
+  ('coarse', 'arg level_ratio=0.65 eps_l=0'), ('coarsest', 'mrg level_ratio=0');
 \copy weight_sets TO 'arg_type_weights.bin' WITH (FORMAT binary)
 CREATE TABLE weight_sets_back (LIKE weight_sets);
 \copy weight_sets_back FROM 'arg_type_weights.bin' WITH (FORMAT binary)
 SELECT a.name, a.w::text = b.w::text AS binary_round_trip
 FROM weight_sets a JOIN weight_sets_back b USING (name) ORDER BY a.name;
+-- level_ratio is kept in the value's spare bits and sent as a 49th byte when it is not 1.
+SELECT name, length(arg_weights_send(w)) AS binary_bytes,
+       substring(w::text FROM 'level_ratio=[0-9.]+') AS level_ratio, substring(w::text FROM 'eps_l=[0-9.]+') AS eps_l
+FROM weight_sets ORDER BY name;
 \! rm -f arg_type_models.txt arg_type_models.bin arg_type_weights.bin
 
 -- Input is validated as strictly in text as in binary.
@@ -87,6 +92,7 @@ FROM (SELECT substr(descr::text, 6) AS t FROM models WHERE name = 'cup_0') s;
 SELECT 'lambda_1=-1'::arg_weights;
 SELECT 'lambda_1'::arg_weights;
 SELECT 'arg graph_on_proxy=1.5'::arg_weights;
+SELECT 'arg level_ratio=1.05'::arg_weights;
 SELECT 'alpha_s=0 beta_s=0 lambda_1=0 lambda_2=0 lambda_3=0 lambda_4=0'::arg_weights;
 
 DROP TABLE models, from_text, from_binary, weight_sets, weight_sets_back;

@@ -10,12 +10,12 @@
 namespace arg {
 
 // Starting from `start`, visits every weight in a fixed order (the mixing weights graph,
-// panorama, spectrum and graph_on_proxy first, then those of sim and of the loss) and tries it
-// multiplied by 0.5 and 2 (or set to 0.1 when it is 0, or to 0), mixing weights rounded to their
-// grid, keeping a change only when the objective grows by more than `min_gain`; repeats for
-// `rounds` passes or until a pass changes nothing. `mixing_only` leaves the graph's own
-// weights alone. `log` (optional) hears each accepted change. Deterministic for a
-// deterministic objective.
+// panorama, spectrum and graph_on_proxy first, then those of sim and of the loss, then
+// level_ratio) and tries it multiplied by 0.5 and 2 (or set to 0.1 when it is 0, or to 0),
+// mixing weights and level_ratio rounded to their grid, keeping a change only when the objective
+// grows by more than `min_gain`; repeats for `rounds` passes or until a pass changes nothing.
+// `mixing_only` leaves the graph's own weights alone. `log` (optional) hears each accepted change.
+// Deterministic for a deterministic objective.
 Weights search_weights(const Weights& start, const std::function<double(const Weights&)>& objective,
                        int rounds = 3, double min_gain = 1e-4,
                        const std::function<void(const std::string&)>& log = {},
@@ -31,11 +31,11 @@ Weights grid_search_mixing(const Weights& start,
                            const std::function<double(const Weights&)>& objective);
 
 // The weight `name` (one the coordinate search visits: graph, panorama, spectrum,
-// graph_on_proxy, alpha_s ... eps_l) set to each of `values` in turn, every other weight as in
-// `start`; returns the best by `objective`, the first value listed on ties (list the value that
-// leaves a term out first, so a term has to earn its weight). Mixing weights are rounded to
-// their grid; a value that leaves no sim or no mixing weight positive is skipped. Throws
-// std::invalid_argument for another name, no values or a value below 0.
+// graph_on_proxy, alpha_s ... eps_l, level_ratio) set to each of `values` in turn, every other
+// weight as in `start`; returns the best by `objective`, the first value listed on ties (list
+// the value that leaves a term out first, so a term has to earn its weight). Mixing weights and
+// level_ratio are rounded to their grid; a value that leaves no sim or no mixing weight positive is
+// skipped. Throws std::invalid_argument for another name, no values or a value below 0.
 Weights search_one_weight(const Weights& start, const std::string& name,
                           const std::vector<float>& values,
                           const std::function<double(const Weights&)>& objective);

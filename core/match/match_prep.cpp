@@ -84,7 +84,8 @@ void prepare_interval_begin(const ArgGraph& g, int r, int* out) {
 void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out,
                   std::vector<OrderKey>* scratch) {
   fill_self(
-      g.nodes.size(), [&](std::size_t m) { return node_self_sim(g.nodes[m], w); }, out);
+      g.nodes.size(), [&](std::size_t m) { return node_self_sim(g.nodes[m], w); }, g.level_begin,
+      w.level_ratio, out);
   prepare_order(g.level_begin, g.levels(), out, scratch);
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "graph/arg_graph.hpp"
+#include "match/node_similarity.hpp"
 #include "match/sim_key.hpp"
 #include "match/weights.hpp"
 
@@ -112,12 +113,21 @@ using OrderKey = std::uint64_t;
 // `keyed` (optional) is scratch space kept by a caller that prepares many graphs.
 void prepare_sums(const ArgGraph& g, const Weights& w, MatchPrep::Sums& out,
                   std::vector<OrderKey>* keyed = nullptr);
-// Its first half: out.self[m] = self_of(m) for n nodes and their total, summed in node order.
+// Its first half: out.self[m] = self_of(m) for n nodes, and their total summed in node order,
+// each times its level's level_scale (levels by `level_begin`, levels + 2 entries). The order
+// of matching reads the self sims as they are: the ratio weighs levels, not nodes.
 template <class SelfOf>
-void fill_self(std::size_t n, SelfOf&& self_of, MatchPrep::Sums& out) {
+void fill_self(std::size_t n, SelfOf&& self_of, const std::vector<std::uint32_t>& level_begin,
+               double level_ratio, MatchPrep::Sums& out) {
   out.self.resize(n);
   double total = 0;
-  for (std::size_t m = 0; m < n; ++m) total += out.self[m] = self_of(m);
+  int level = 0;
+  double scale = 1;
+  for (std::size_t m = 0; m < n; ++m) {
+    while (std::size_t(level) + 2 < level_begin.size() && m >= level_begin[std::size_t(level) + 1])
+      scale = level_scale(level_ratio, ++level);
+    total += (out.self[m] = self_of(m)) * scale;
+  }
   out.total = total;
 }
 // Its second half: out.order from out.self, level by level of `level_begin` (levels + 2 entries).

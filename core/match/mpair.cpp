@@ -239,6 +239,7 @@ double match_graphs(const ArgGraph& gx, const MatchPrep* px, const ArgGraph& gy,
   double numerator = 0;
   std::vector<std::pair<int, int>> all_extra_x, all_extra_y;  // only filled for groups_out
   for (int r = 0; r <= levels; ++r) {
+    const double scale = level_scale(w.level_ratio, r);
     const int xb = int(gx.level_begin[std::size_t(r)]),
               xe = int(gx.level_begin[std::size_t(r) + 1]);
     const int yb = int(gy.level_begin[std::size_t(r)]),
@@ -348,7 +349,7 @@ double match_graphs(const ArgGraph& gx, const MatchPrep* px, const ArgGraph& gy,
           if (e.first == k) my.add(gy.nodes[std::size_t(e.second)]);
         sim = node_sim(mx, my, w);
       }
-      numerator += sim;
+      numerator += sim * scale;
       if (group_sim) group_sim->push_back(sim);
     }
     if (groups_out) {

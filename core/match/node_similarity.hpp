@@ -34,6 +34,15 @@ double histogram_min(const std::array<float, N>& x, const std::array<float, N>& 
 double node_sim(const NodeMass& m, const NodeMass& n, const Weights& w);
 double node_sim(const ArgNode& m, const ArgNode& n, const Weights& w);
 
+// What a level's sims count for: level_ratio^level (Weights::level_ratio), by repeated
+// products, as every sum of SIM's numerator and denominator takes it; exactly 1 when the ratio
+// is 1, so that SIM is then the plain sum it always was.
+inline double level_scale(double level_ratio, int level) {
+  double s = 1;
+  for (int r = 0; r < level; ++r) s *= level_ratio;
+  return s;
+}
+
 // loss(m, n) over a and l (scaled to their level's total), r (capped at 2 RMS radii, halved),
 // theta and phi (over pi); L1 or squared differences per the weights. `m` and `n` are nodes or
 // anything with their float fields a, l, r, theta and phi (match/match_prep.hpp's MatchKey).

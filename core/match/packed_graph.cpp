@@ -125,7 +125,7 @@ bool read_packed_graph(std::string_view bytes, const Weights& weights, PackedGra
         const SimKey& k = p.sim_keys[i];
         return node_self_sim(k.a, k.l, k.v, plain);
       },
-      p.plain);
+      g.level_begin, plain.level_ratio, p.plain);
   p.plain.order.clear();  // only when the row comes first (order_packed_graph)
   p.coloured.self.clear();
   p.coloured.order.clear();

@@ -70,7 +70,7 @@ int compare_graphs(const ArgGraph& a, const ArgGraph& b) {
 // Sum of every node's own sim: what the numerator would reach if the graph met itself.
 double self_mass(const ArgGraph& g, const Weights& w) {
   double s = 0;
-  for (const ArgNode& n : g.nodes) s += node_self_sim(n, w);
+  for (const ArgNode& n : g.nodes) s += node_self_sim(n, w) * level_scale(w.level_ratio, n.level);
   return s;
 }
 

@@ -16,8 +16,10 @@ SimilarityTerms similarity_terms(const ArgGraph& a, const ArgGraph& b, const Wei
   if (!(a.summary.has_colour && b.summary.has_colour)) w.lambda_4 = 0;
   // Members of each group on each side, as global node indices.
   std::map<int, std::pair<std::set<int>, std::set<int>>> groups;
+  std::map<int, int> group_level;
   for (const MatchPair& p : matches) {
     if (p.level < 0 || p.level > a.levels() || p.level > b.levels()) continue;
+    group_level[p.group] = p.level;
     auto& g = groups[p.group];
     g.first.insert(int(a.level_begin[std::size_t(p.level)]) + p.a_node);
     g.second.insert(int(b.level_begin[std::size_t(p.level)]) + p.b_node);
@@ -30,19 +32,22 @@ SimilarityTerms similarity_terms(const ArgGraph& a, const ArgGraph& b, const Wei
       if (i >= 0 && std::size_t(i) < a.nodes.size()) m.add(a.nodes[std::size_t(i)]);
     for (int i : members.second)
       if (i >= 0 && std::size_t(i) < b.nodes.size()) n.add(b.nodes[std::size_t(i)]);
-    t.a += w.alpha_s * std::min(m.a, n.a);
-    t.l += w.beta_s * std::min(m.l, n.l);
-    if (w.lambda_1 > 0) t.v += w.lambda_1 * std::min(m.v, n.v);
-    if (w.lambda_2 > 0) t.cords += w.lambda_2 * histogram_min(m.cords, n.cords);
+    const double s = level_scale(w.level_ratio, group_level[id]);
+    t.a += s * w.alpha_s * std::min(m.a, n.a);
+    t.l += s * w.beta_s * std::min(m.l, n.l);
+    if (w.lambda_1 > 0) t.v += s * w.lambda_1 * std::min(m.v, n.v);
+    if (w.lambda_2 > 0) t.cords += s * w.lambda_2 * histogram_min(m.cords, n.cords);
     if (w.lambda_3 > 0)
       t.curvature +=
-          w.lambda_3 * 0.5 *
+          s * w.lambda_3 * 0.5 *
           (histogram_min(m.curv_mean, n.curv_mean) + histogram_min(m.curv_gauss, n.curv_gauss));
-    if (w.lambda_4 > 0) t.colour += w.lambda_4 * histogram_min(m.colour, n.colour) / 3.0;
+    if (w.lambda_4 > 0) t.colour += s * w.lambda_4 * histogram_min(m.colour, n.colour) / 3.0;
   }
   double self = 0;
-  for (const ArgNode& n : a.nodes) self += node_self_sim(n, w);
-  for (const ArgNode& n : b.nodes) self += node_self_sim(n, w);
+  for (const ArgNode& n : a.nodes)
+    self += node_self_sim(n, w) * level_scale(w.level_ratio, n.level);
+  for (const ArgNode& n : b.nodes)
+    self += node_self_sim(n, w) * level_scale(w.level_ratio, n.level);
   const double denominator = 0.5 * self;
   if (!(denominator > 0)) {
     SimilarityTerms none;

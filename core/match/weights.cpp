@@ -36,6 +36,7 @@ constexpr Field kFields[] = {
     {"panorama", &Weights::panorama},
     {"spectrum", &Weights::spectrum},
     {"graph_on_proxy", &Weights::graph_on_proxy},
+    {"level_ratio", &Weights::level_ratio},
 };
 
 // The switches, each with its two words (off first) as the text writes them.
@@ -75,10 +76,11 @@ struct Preset {
 };
 constexpr Preset kPresets[] = {
     {"arg", [](Weights&) {}},
-    {"part",  // 0.1.0's feature weights: node against node, they find a part's kin better
+    {"part",  // 0.2.0's graph weights: node against node, they find a part's kin better
      [](Weights& w) {
        w.lambda_2 = 1.0f;
        w.lambda_3 = 3.0f;
+       w.level_ratio = 1.0f;
      }},
     {"mrg",  // Hilaga et al.: topology only, equal weights
      [](Weights& w) {
@@ -89,6 +91,7 @@ constexpr Preset kPresets[] = {
        w.graph = 1;
        w.panorama = w.spectrum = 0;
        w.graph_on_proxy = 1;
+       w.level_ratio = 1;
        w.tung_rule = false;
        w.groups = true;
      }},
@@ -105,12 +108,14 @@ constexpr Preset kPresets[] = {
 
 bool is_mixing(const Field& f) {
   return f.member == &Weights::graph || f.member == &Weights::panorama ||
-         f.member == &Weights::spectrum || f.member == &Weights::graph_on_proxy;
+         f.member == &Weights::spectrum || f.member == &Weights::graph_on_proxy ||
+         f.member == &Weights::level_ratio;
 }
 
 // The largest number of kMixingStep steps a mixing weight may take (its storage in SQL).
 int max_steps(const Field& f) {
-  return f.member == &Weights::graph_on_proxy ? kMaxGraphOnProxySteps : 255;
+  if (f.member == &Weights::graph_on_proxy) return kMaxGraphOnProxySteps;
+  return f.member == &Weights::level_ratio ? kMaxLevelRatioSteps : 255;
 }
 
 // The presets an error message names, "arg, part, ..., colour" ("color" is another spelling).
@@ -194,6 +199,8 @@ void validate(const Weights& w) {
                      ": at least one of alpha_s, beta_s, lambda_1..lambda_4 must be positive");
   if (mixing_steps(w.graph_on_proxy) > kMaxGraphOnProxySteps)
     throw InputError(std::string(kWhat) + ": graph_on_proxy must be at most 1");
+  if (mixing_steps(w.level_ratio) > kMaxLevelRatioSteps)
+    throw InputError(std::string(kWhat) + ": level_ratio must be at most 1");
   if (w.graph + w.panorama + w.spectrum <= 0)
     throw InputError(std::string(kWhat) +
                      ": at least one of graph, panorama, spectrum must be positive");

@@ -38,6 +38,12 @@ struct Weights {
   // Learnt like the three above, on the training sets and on copies of them built on proxies
   // (argtool tune --proxy-copies): no proxy graph would be seen in training otherwise.
   float graph_on_proxy = 0.75f;
+  // Each level's share of the graph's SIM is level_ratio times the share of the level above it
+  // (r = 0 the coarsest): its matched pairs' sims and its nodes' self sims are weighed by
+  // level_ratio^r. 1 weighs every level alike, as Hilaga's MRG does; below 1 the coarse levels,
+  // where the whole shape is, count more than the fine ones, where its details are. Which
+  // nodes match does not depend on it. In [0, 1], steps of kMixingStep.
+  float level_ratio = 1.0f;
   bool l2 = false;        // squared differences in the loss instead of absolute ones
   bool tung_rule = true;  // Tung and Schmitt's extra consistency rule (off for Hilaga's MRG)
   bool groups = false;    // a node may match a group of nodes of its interval (Hilaga's MRG)
@@ -64,17 +70,18 @@ Weights weights_preset(std::string_view name);
 
 // A preset name, or "key=value" pairs separated by spaces or commas, optionally after a preset
 // ("shape lambda_4=0.1"). Keys (weight_keys()): alpha_l beta_l gamma_l delta_l eps_l alpha_s
-// beta_s lambda_1..4 graph panorama spectrum graph_on_proxy norm=l1|l2 tung=on|off
+// beta_s lambda_1..4 graph panorama spectrum graph_on_proxy level_ratio norm=l1|l2 tung=on|off
 // groups=on|off, and readable names for the first eleven. Each weight at most once, under
 // either name. Values finite and >= 0 (graph_on_proxy at most 1), at least one sim weight and
-// one of graph, panorama, spectrum positive.
+// one of graph, panorama, spectrum positive; graph_on_proxy and level_ratio at most 1.
 Weights parse_weights(std::string_view text);
 
 // graph, panorama and spectrum are multiples of this in [0, 255 steps]: the SQL type keeps
-// each in one byte; graph_on_proxy in [0, 20 steps] (five bits of its switch byte).
+// each in one byte; graph_on_proxy and level_ratio in [0, 20 steps] (five bits each).
 // mixing_weight(k) is the float for k steps; mixing_steps inverts it.
 inline constexpr double kMixingStep = 0.05;
 inline constexpr int kMaxGraphOnProxySteps = 20;
+inline constexpr int kMaxLevelRatioSteps = 20;
 float mixing_weight(int steps);
 int mixing_steps(float weight);
 

@@ -43,7 +43,7 @@ bool same_bits(double x, double y) {
   return std::memcmp(&x, &y, sizeof x) == 0;
 }
 
-const char* kPresets[] = {"arg", "mrg", "graph", "shape", "colour"};
+const char* kPresets[] = {"arg", "mrg", "graph", "shape", "colour", "arg level_ratio=0.6"};
 
 }  // namespace
 
@@ -51,7 +51,7 @@ TEST(PackedGraph, PrepIsTheDecodedGraphsPrepByteForByte) {
   PackedGraph row;  // reused row after row, as a ranking does
   for (const char* preset : kPresets)
     for (const std::string& bytes : plain_values()) {
-      const Weights w = weights_preset(preset);
+      const Weights w = parse_weights(preset);
       ASSERT_TRUE(read_packed_graph(bytes, w, row));
       const ArgGraph g = deserialize_arg(bytes, false);
       MatchPrep full;
@@ -96,7 +96,7 @@ TEST(PackedGraph, SimilarityIsArgSimilarityBitForBit) {
   PackedGraph row;
   int compared = 0;
   for (const char* preset : kPresets) {
-    const Weights w = weights_preset(preset);
+    const Weights w = parse_weights(preset);
     if (w.groups) continue;
     for (const ArgGraph& q : queries) {
       MatchPrep prep;

@@ -351,18 +351,19 @@ TEST(Render, ColourMapsAreOrderedAndDistinct) {
 }
 
 TEST(Render, SimilarityTermsAddUpToOneMinusTheGraphsSim) {
-  const Weights w;
   const Model &a = model("human", 0), &b = model("human", 1), &c = model("cup", 0);
-  for (const auto& [x, y] : {std::make_pair(&a, &b), std::make_pair(&b, &a), std::make_pair(&a, &c),
-                             std::make_pair(&a, &a)}) {
-    std::vector<MatchPair> pairs;
-    const double sim = graph_similarity(x->graph, y->graph, w, &pairs);
-    const SimilarityTerms t = similarity_terms(x->graph, y->graph, w, pairs);
-    // SIM of a graph with itself is 0 by definition; the terms sum byte-coded histograms whose
-    // totals equal the node areas only to a code (1/255 of the area, format 3).
-    EXPECT_NEAR(t.total(), 1 - sim, x == y ? 1e-3 : 1e-9);
-    for (double term : {t.a, t.l, t.v, t.cords, t.curvature, t.colour}) EXPECT_GE(term, 0);
-  }
+  for (const Weights& w : {Weights{}, parse_weights("arg level_ratio=0.5")})
+    for (const auto& [x, y] : {std::make_pair(&a, &b), std::make_pair(&b, &a),
+                               std::make_pair(&a, &c), std::make_pair(&a, &a)}) {
+      std::vector<MatchPair> pairs;
+      const double sim = graph_similarity(x->graph, y->graph, w, &pairs);
+      const SimilarityTerms t = similarity_terms(x->graph, y->graph, w, pairs);
+      // SIM of a graph with itself is 0 by definition; the terms sum byte-coded histograms whose
+      // totals equal the node areas only to a code (1/255 of the area, format 3).
+      EXPECT_NEAR(t.total(), 1 - sim, x == y ? 1e-3 : 1e-9);
+      for (double term : {t.a, t.l, t.v, t.cords, t.curvature, t.colour}) EXPECT_GE(term, 0);
+    }
+  const Weights w;
   // Colour weighs nothing unless both models have colour.
   Model grey = model("human", 1);
   grey.graph.summary.has_colour = 0;

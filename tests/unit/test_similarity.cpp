@@ -41,17 +41,17 @@ const std::vector<ArgGraph>& shapes() {
 }  // namespace
 
 TEST(Similarity, SelfSimilarityIsZeroForEveryPreset) {
-  for (const char* preset : {"arg", "mrg", "shape", "colour"})
+  for (const char* preset : {"arg", "mrg", "shape", "colour", "arg level_ratio=0.5"})
     for (const ArgGraph& g : shapes())
-      EXPECT_EQ(arg_similarity(g, g, weights_preset(preset)), 0.0) << preset;
+      EXPECT_EQ(arg_similarity(g, g, parse_weights(preset)), 0.0) << preset;
 }
 
 TEST(Similarity, IsExactlySymmetricAndWithinZeroAndOne) {
   const auto& g = shapes();
-  for (const char* preset : {"arg", "mrg"})
+  for (const char* preset : {"arg", "mrg", "arg level_ratio=0.6"})
     for (std::size_t i = 0; i < g.size(); ++i)
       for (std::size_t j = 0; j < g.size(); ++j) {
-        Weights w = weights_preset(preset);
+        Weights w = parse_weights(preset);
         double ab = arg_similarity(g[i], g[j], w), ba = arg_similarity(g[j], g[i], w);
         EXPECT_EQ(ab, ba) << i << " " << j;
         EXPECT_GE(ab, 0.0);
@@ -106,6 +106,41 @@ TEST(Similarity, AProxyGraphCountsItsShareGraphOnProxy) {
   // With no share left for the graph, SIM is the views' distance alone.
   EXPECT_NEAR(similarity_parts(g[0], proxy, w).sim, similarity_parts(g[0], proxy, w).panorama,
               1e-12);
+}
+
+// A copy of `g` whose nodes below level 0 have their curvature histograms moved one bin up:
+// the same matches (the loss does not read them), less shared below the coarsest level.
+ArgGraph curvature_moved_below_level_0(const ArgGraph& g) {
+  ArgGraph h = g;
+  for (ArgNode& n : h.nodes)
+    if (n.level > 0)
+      std::rotate(n.curv_mean.rbegin(), n.curv_mean.rbegin() + 1, n.curv_mean.rend());
+  return h;
+}
+
+TEST(Similarity, LevelRatioWeighsTheCoarseLevelsAgainstTheFineOnes) {
+  const ArgGraph& g = shapes()[0];
+  const ArgGraph h = curvature_moved_below_level_0(g);
+  auto sim = [&](const char* ratio) {
+    return arg_similarity(g, h, parse_weights(std::string("graph level_ratio=") + ratio));
+  };
+  // Only level 0 counts at 0: the two graphs are alike there.
+  EXPECT_EQ(sim("0"), 0.0);
+  // The fine levels' difference counts less the smaller the ratio.
+  EXPECT_GT(sim("1"), sim("0.75"));
+  EXPECT_GT(sim("0.75"), sim("0.5"));
+  EXPECT_GT(sim("0.5"), 0.0);
+  // 1 is SIM as it always was: the default, and the `mrg` and `part` presets' value.
+  EXPECT_EQ(sim("1"), arg_similarity(g, h, weights_preset("graph")));
+  EXPECT_FLOAT_EQ(weights_preset("mrg").level_ratio, 1.0f);
+  EXPECT_FLOAT_EQ(weights_preset("part").level_ratio, 1.0f);
+}
+
+TEST(Weights, LevelRatioIsOnTheMixingGridUpToOne) {
+  EXPECT_FLOAT_EQ(parse_weights("level_ratio=0.65").level_ratio, 0.65f);
+  for (const char* bad : {"level_ratio=1.05", "level_ratio=0.33", "level_ratio=-0.05"})
+    EXPECT_THROW(parse_weights(bad), InputError) << bad;
+  EXPECT_NE(weights_error("level_ratio=2").find("[0, 1]"), std::string::npos);
 }
 
 TEST(Weights, GraphOnProxyIsAShareOnTheMixingGrid) {
@@ -190,7 +225,7 @@ TEST(Weights, TheCanonicalTextKeepsThePapersSymbols) {
   EXPECT_EQ(format_weights(weights_preset("arg")),
             "alpha_l=0.3 beta_l=0.15 gamma_l=0.15 delta_l=0.2 eps_l=0.2 alpha_s=0.65 beta_s=0.35 "
             "lambda_1=0.3 lambda_2=0.5 lambda_3=12 lambda_4=1 graph=1 panorama=2.5 spectrum=0.75 "
-            "graph_on_proxy=0.75 norm=l1 tung=on groups=off");
+            "graph_on_proxy=0.75 level_ratio=1 norm=l1 tung=on groups=off");
   // `part` is `arg` with 0.2.0's cords and curvature, and nothing else.
   EXPECT_EQ(format_weights(weights_preset("part")),
             format_weights(parse_weights("arg lambda_2=1 lambda_3=3")));

@@ -13,12 +13,16 @@ MATCH_FIELDS: Tuple[str, ...] = (
     "alpha_l", "beta_l", "gamma_l", "delta_l", "eps_l",
     "alpha_s", "beta_s", "lambda_1", "lambda_2", "lambda_3", "lambda_4",
 )
-# The weights of the three terms of SIM and the graph's share on proxies: multiples of
-# MIXING_STEP, because the server keeps each in (part of) a byte.
-MIXING_FIELDS: Tuple[str, ...] = ("graph", "panorama", "spectrum", "graph_on_proxy")
+# The weights of the three terms of SIM, the graph's share on proxies and the ratio of a level's
+# share of the graph's SIM to the level above's: multiples of MIXING_STEP, because the server
+# keeps each in (part of) a byte.
+MIXING_FIELDS: Tuple[str, ...] = ("graph", "panorama", "spectrum", "graph_on_proxy", "level_ratio")
 MIXING_STEP = 0.05
 MAX_MIXING_STEPS = 255
 MAX_GRAPH_ON_PROXY_STEPS = 20
+MAX_LEVEL_RATIO_STEPS = 20
+# Keys a server before 0.3.0 does not print, with the value its SIM had.
+_OPTIONAL_KEYS: Dict[str, str] = {"level_ratio": "1"}
 
 
 def float32(x: float) -> float:
@@ -34,7 +38,8 @@ def mixing_weight(steps: int) -> float:
 def mixing_steps(name: str, value: float) -> int:
     """The number of MIXING_STEP steps of a mixing weight; ValueError when it has none."""
     steps = round(value / MIXING_STEP)
-    limit = MAX_GRAPH_ON_PROXY_STEPS if name == "graph_on_proxy" else MAX_MIXING_STEPS
+    limit = {"graph_on_proxy": MAX_GRAPH_ON_PROXY_STEPS,
+             "level_ratio": MAX_LEVEL_RATIO_STEPS}.get(name, MAX_MIXING_STEPS)
     if not (0 <= steps <= limit) or abs(value / MIXING_STEP - steps) > 1e-6:
         raise ValueError(f"{name}={value!r} must be a multiple of {MIXING_STEP} in "
                          f"[0, {limit * MIXING_STEP:g}]")
@@ -76,6 +81,7 @@ class ArgWeights:
     panorama: float = 2.5
     spectrum: float = 0.75
     graph_on_proxy: float = 0.75
+    level_ratio: float = 1.0
     norm: str = "l1"
     tung: bool = True
     groups: bool = False
@@ -104,6 +110,8 @@ class ArgWeights:
                                  "(presets are the server's: SELECT 'mrg'::arg_weights)")
             pairs[key] = value
         names = MATCH_FIELDS + MIXING_FIELDS + ("norm", "tung", "groups")
+        for key, value in _OPTIONAL_KEYS.items():
+            pairs.setdefault(key, value)
         if set(pairs) != set(names):
             missing = sorted(set(names) - set(pairs))
             unknown = sorted(set(pairs) - set(names))

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import struct
 from typing import Any
 
 import psycopg
@@ -112,6 +113,25 @@ def test_binary_decoding_matches_the_servers(conn: psycopg.Connection[Any], mixi
     data = pack_weights(ArgWeights())[:44] + bytes([2 | proxy_steps << 3]) + mixing
     server = conn.execute("SELECT %b::arg_weights::text", (_RawWeights(data),)).fetchone()[0]
     assert str(unpack_weights(data)) == server
+
+
+@pytest.mark.parametrize("ratio", [1, 0.65, 0])
+def test_level_ratio_reaches_the_server_and_back_in_both_forms(conn: psycopg.Connection[Any],
+                                                                ratio: float) -> None:
+    weights = ArgWeights(level_ratio=ratio)
+    text, back = conn.execute("SELECT %s::arg_weights::text, %s::arg_weights",
+                              (str(weights), str(weights))).fetchone()
+    assert text == str(weights) and back == weights
+    _send_raw(conn)
+    assert conn.execute("SELECT %b::arg_weights::text", (_RawWeights(pack_weights(weights)),)).fetchone()[0] == text
+
+
+def test_a_negative_weight_or_a_level_ratio_byte_out_of_range_is_refused(conn: psycopg.Connection[Any]) -> None:
+    _send_raw(conn)
+    negative = struct.pack(">f", -0.0) + pack_weights(ArgWeights())[4:]
+    for data in (negative, pack_weights(ArgWeights()) + bytes([21])):
+        with pytest.raises(psycopg.errors.InvalidBinaryRepresentation):
+            conn.execute("SELECT %b::arg_weights", (_RawWeights(data),))
 
 
 def test_graph_on_proxy_bits_out_of_range_are_refused_by_both(conn: psycopg.Connection[Any]) -> None:

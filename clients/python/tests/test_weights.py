@@ -1,4 +1,4 @@
-"""ArgWeights without a server: float4 rounding, the canonical text and the 48-byte binary form."""
+"""ArgWeights without a server: float4 rounding, the canonical text and the 48- or 49-byte binary form."""
 
 from __future__ import annotations
 
@@ -24,17 +24,30 @@ def test_weights_are_kept_as_float4() -> None:
 def test_canonical_text_uses_the_shortest_exact_digits() -> None:
     text = str(ArgWeights())
     assert text.startswith("alpha_l=0.3 beta_l=0.15 ")
-    assert text.endswith(" graph=1 panorama=2.5 spectrum=0.75 graph_on_proxy=0.75 norm=l1 tung=on groups=off")
+    assert text.endswith(" graph=1 panorama=2.5 spectrum=0.75 graph_on_proxy=0.75 level_ratio=1 norm=l1 tung=on groups=off")
     assert "delta_l=0.33333334" in str(ODD)  # 1/3 needs eight digits as a float4
     assert "beta_l=1e+06" in str(ODD)
 
 
-@pytest.mark.parametrize("weights", [ArgWeights(), ODD, ArgWeights(lambda_4=0, graph_on_proxy=1)])
+@pytest.mark.parametrize("weights", [ArgWeights(), ODD, ArgWeights(lambda_4=0, graph_on_proxy=1),
+                                     ArgWeights(level_ratio=0.65), ArgWeights(level_ratio=0)])
 def test_text_and_binary_read_back(weights: ArgWeights) -> None:
     assert ArgWeights.parse(str(weights)) == weights
     data = pack_weights(weights)
-    assert len(data) == 48
+    assert len(data) == (48 if weights.level_ratio == 1 else 49)
     assert unpack_weights(data) == weights
+
+
+def test_level_ratio_is_a_byte_of_its_own_sent_only_when_not_1() -> None:
+    assert pack_weights(ArgWeights(level_ratio=0.65))[48] == 7  # 1 - 0.65 = 7 steps of 0.05
+    assert pack_weights(ArgWeights(level_ratio=0.65))[:48] == pack_weights(ArgWeights())
+    with pytest.raises(ValueError):
+        ArgWeights(level_ratio=1.05)
+
+
+def test_text_of_a_server_before_level_ratio_reads_as_ratio_1() -> None:
+    old = str(ArgWeights()).replace(" level_ratio=1", "")
+    assert ArgWeights.parse(old) == ArgWeights()
 
 
 def test_binary_layout() -> None:
@@ -52,7 +65,8 @@ def test_zero_mixing_bytes_read_as_the_graph_alone() -> None:
     assert (w.graph, w.panorama, w.spectrum) == (1, 0, 0)
 
 
-@pytest.mark.parametrize("data", [bytes(47), bytes(49), pack_weights(ArgWeights())[:44] + bytes([21 << 3]) + bytes(3)])
+@pytest.mark.parametrize("data", [bytes(47), bytes(50), pack_weights(ArgWeights()) + bytes([21]),
+                                  pack_weights(ArgWeights())[:44] + bytes([21 << 3]) + bytes(3)])
 def test_binary_the_server_never_sends_is_refused(data: bytes) -> None:
     with pytest.raises(ValueError):
         unpack_weights(data)
