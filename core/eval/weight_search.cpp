@@ -16,26 +16,17 @@ struct Knob {
   const char* name;
   float Weights::*member;
   bool mixing;  // one of the terms' mixing, which --mixing-only searches
-  int grid;     // steps of kMixingStep it is kept on, at most this many (0: any value)
 };
 
 constexpr Knob kKnobs[] = {
-    {"graph", &Weights::graph, true, 255},
-    {"panorama", &Weights::panorama, true, 255},
-    {"spectrum", &Weights::spectrum, true, 255},
-    {"graph_on_proxy", &Weights::graph_on_proxy, true, kMaxGraphOnProxySteps},
-    {"alpha_s", &Weights::alpha_s, false, 0},
-    {"beta_s", &Weights::beta_s, false, 0},
-    {"lambda_1", &Weights::lambda_1, false, 0},
-    {"lambda_2", &Weights::lambda_2, false, 0},
-    {"lambda_3", &Weights::lambda_3, false, 0},
-    {"lambda_4", &Weights::lambda_4, false, 0},
-    {"alpha_l", &Weights::alpha_l, false, 0},
-    {"beta_l", &Weights::beta_l, false, 0},
-    {"gamma_l", &Weights::gamma_l, false, 0},
-    {"delta_l", &Weights::delta_l, false, 0},
-    {"eps_l", &Weights::eps_l, false, 0},
-    {"level_ratio", &Weights::level_ratio, false, kMaxLevelRatioSteps},
+    {"graph", &Weights::graph, true},        {"panorama", &Weights::panorama, true},
+    {"spectrum", &Weights::spectrum, true},  {"graph_on_proxy", &Weights::graph_on_proxy, true},
+    {"alpha_s", &Weights::alpha_s, false},   {"beta_s", &Weights::beta_s, false},
+    {"lambda_1", &Weights::lambda_1, false}, {"lambda_2", &Weights::lambda_2, false},
+    {"lambda_3", &Weights::lambda_3, false}, {"lambda_4", &Weights::lambda_4, false},
+    {"alpha_l", &Weights::alpha_l, false},   {"beta_l", &Weights::beta_l, false},
+    {"gamma_l", &Weights::gamma_l, false},   {"delta_l", &Weights::delta_l, false},
+    {"eps_l", &Weights::eps_l, false},       {"level_ratio", &Weights::level_ratio, false},
 };
 
 bool valid(const Weights& w) {
@@ -46,8 +37,8 @@ bool valid(const Weights& w) {
 // A weight kept on the grid of kMixingStep (the SQL type's byte or bits) rounded to it; other
 // weights as they are.
 float on_grid(const Knob& k, float value) {
-  if (k.grid == 0) return value;
-  return mixing_weight(std::clamp(mixing_steps(value), 0, k.grid));
+  const int most = grid_steps(k.name);
+  return most == 0 ? value : mixing_weight(std::clamp(mixing_steps(value), 0, most));
 }
 
 }  // namespace

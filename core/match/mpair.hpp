@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "graph/arg_graph.hpp"
+#include "match/node_similarity.hpp"
 #include "match/weights.hpp"
 
 namespace arg {
@@ -58,6 +59,14 @@ inline double node_self_sim(float a, float l, float v, const Weights& w) {
 }
 inline double node_self_sim(const ArgNode& n, const Weights& w) {
   return node_self_sim(n.a, n.l, n.v, w);
+}
+
+// Sum of every node's own sim, each level's by its level_scale: what SIM's numerator would
+// reach if the graph met itself (its share of the denominator).
+inline double self_mass(const ArgGraph& g, const Weights& w) {
+  double s = 0;
+  for (const ArgNode& n : g.nodes) s += node_self_sim(n, w) * level_scale(w.level_ratio, n.level);
+  return s;
 }
 
 }  // namespace arg

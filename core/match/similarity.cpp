@@ -67,13 +67,6 @@ int compare_graphs(const ArgGraph& a, const ArgGraph& b) {
   return 0;
 }
 
-// Sum of every node's own sim: what the numerator would reach if the graph met itself.
-double self_mass(const ArgGraph& g, const Weights& w) {
-  double s = 0;
-  for (const ArgNode& n : g.nodes) s += node_self_sim(n, w) * level_scale(w.level_ratio, n.level);
-  return s;
-}
-
 int index_in_level(const ArgGraph& g, int node) {
   return node - int(g.level_begin[g.nodes[std::size_t(node)].level]);
 }

@@ -14,13 +14,16 @@ SimilarityTerms similarity_terms(const ArgGraph& a, const ArgGraph& b, const Wei
                                  const std::vector<MatchPair>& matches) {
   Weights w = weights;
   if (!(a.summary.has_colour && b.summary.has_colour)) w.lambda_4 = 0;
-  // Members of each group on each side, as global node indices.
-  std::map<int, std::pair<std::set<int>, std::set<int>>> groups;
-  std::map<int, int> group_level;
+  // Each group's level and its members on each side, as global node indices.
+  struct Group {
+    int level = 0;
+    std::set<int> first, second;
+  };
+  std::map<int, Group> groups;
   for (const MatchPair& p : matches) {
     if (p.level < 0 || p.level > a.levels() || p.level > b.levels()) continue;
-    group_level[p.group] = p.level;
-    auto& g = groups[p.group];
+    Group& g = groups[p.group];
+    g.level = p.level;
     g.first.insert(int(a.level_begin[std::size_t(p.level)]) + p.a_node);
     g.second.insert(int(b.level_begin[std::size_t(p.level)]) + p.b_node);
   }
@@ -32,7 +35,7 @@ SimilarityTerms similarity_terms(const ArgGraph& a, const ArgGraph& b, const Wei
       if (i >= 0 && std::size_t(i) < a.nodes.size()) m.add(a.nodes[std::size_t(i)]);
     for (int i : members.second)
       if (i >= 0 && std::size_t(i) < b.nodes.size()) n.add(b.nodes[std::size_t(i)]);
-    const double s = level_scale(w.level_ratio, group_level[id]);
+    const double s = level_scale(w.level_ratio, members.level);
     t.a += s * w.alpha_s * std::min(m.a, n.a);
     t.l += s * w.beta_s * std::min(m.l, n.l);
     if (w.lambda_1 > 0) t.v += s * w.lambda_1 * std::min(m.v, n.v);
@@ -43,12 +46,7 @@ SimilarityTerms similarity_terms(const ArgGraph& a, const ArgGraph& b, const Wei
           (histogram_min(m.curv_mean, n.curv_mean) + histogram_min(m.curv_gauss, n.curv_gauss));
     if (w.lambda_4 > 0) t.colour += s * w.lambda_4 * histogram_min(m.colour, n.colour) / 3.0;
   }
-  double self = 0;
-  for (const ArgNode& n : a.nodes)
-    self += node_self_sim(n, w) * level_scale(w.level_ratio, n.level);
-  for (const ArgNode& n : b.nodes)
-    self += node_self_sim(n, w) * level_scale(w.level_ratio, n.level);
-  const double denominator = 0.5 * self;
+  const double denominator = 0.5 * (self_mass(a, w) + self_mass(b, w));
   if (!(denominator > 0)) {
     SimilarityTerms none;
     none.weights = w;

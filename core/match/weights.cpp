@@ -212,6 +212,12 @@ float mixing_weight(int steps) {
   return float(steps * kMixingStep);
 }
 
+int grid_steps(std::string_view symbol) {
+  for (const Field& f : kFields)
+    if (symbol == f.name) return is_mixing(f) ? max_steps(f) : 0;
+  return 0;
+}
+
 int mixing_steps(float weight) {
   return int(std::lround(double(weight) / kMixingStep));
 }

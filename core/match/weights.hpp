@@ -84,6 +84,9 @@ inline constexpr int kMaxGraphOnProxySteps = 20;
 inline constexpr int kMaxLevelRatioSteps = 20;
 float mixing_weight(int steps);
 int mixing_steps(float weight);
+// The most kMixingStep steps the weight `symbol` may take when it is kept on that grid (graph,
+// panorama, spectrum: 255; graph_on_proxy, level_ratio: 20), 0 for a weight kept as any float.
+int grid_steps(std::string_view symbol);
 
 // Canonical text form; parse_weights(format_weights(w)) == w.
 std::string format_weights(const Weights& w);
