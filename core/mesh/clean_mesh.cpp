@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 #include "common/errors.hpp"
@@ -52,6 +53,53 @@ std::vector<int> weld_map(const Vertices& V, std::size_t* welded, const StopRequ
     }
   }
   return map;
+}
+
+// Which faces repeat the corner set of a face before them (`corners`: each face's corners
+// ascending). Faces are bucketed by their smallest corner, in order (a counting sort), and each
+// bucket, the few faces whose smallest corner is one vertex, is searched for an earlier equal
+// pair of the other two; a bucket too large for that (the centre of a fan) is sorted. Linear,
+// where a sort of every face's corners took n log n, and the same faces come out.
+std::vector<char> repeated_faces(const std::vector<std::array<int, 3>>& corners,
+                                 std::size_t vertices, const StopRequested& stop) {
+  std::vector<int> start(vertices + 1, 0);
+  for (const auto& c : corners) ++start[std::size_t(c[0]) + 1];
+  for (std::size_t v = 0; v < vertices; ++v) start[v + 1] += start[v];
+  std::vector<int> order(corners.size());
+  {
+    std::vector<int> next(start.begin(), start.end() - 1);
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+      poll_interrupt(k, stop);
+      order[std::size_t(next[std::size_t(corners[k][0])]++)] = int(k);
+    }
+  }
+  std::vector<char> repeated(corners.size(), 0);
+  // The other two corners packed into one word, then the face's place: pairs compare as words.
+  const auto pair_of = [&](int k) {
+    const auto& c = corners[std::size_t(k)];
+    return std::uint64_t(std::uint32_t(c[1])) << 32 | std::uint32_t(c[2]);
+  };
+  std::vector<std::pair<std::uint64_t, int>> large;
+  for (std::size_t v = 0; v < vertices; ++v) {
+    poll_interrupt(v, stop);
+    const int* first = order.data() + start[v];
+    const int* last = order.data() + start[v + 1];
+    if (last - first <= 32) {
+      for (const int* i = first + 1; i < last; ++i)
+        for (const int* j = first; j < i; ++j)
+          if (pair_of(*j) == pair_of(*i)) {
+            repeated[std::size_t(*i)] = 1;
+            break;
+          }
+      continue;
+    }
+    large.clear();
+    for (const int* i = first; i < last; ++i) large.emplace_back(pair_of(*i), *i);
+    polled_sort(large.begin(), large.end(), std::less<>(), stop);
+    for (std::size_t k = 1; k < large.size(); ++k)
+      if (large[k].first == large[k - 1].first) repeated[std::size_t(large[k].second)] = 1;
+  }
+  return repeated;
 }
 
 double triangle_area(const Vertices& V, int a, int b, int c) {
@@ -133,18 +181,9 @@ Mesh clean_mesh(const Mesh& in, CleanReport* report, const StopRequested& stop, 
   const double min_area = 1e-14 * (hi - lo).squaredNorm();
 
   // Keep faces with three distinct corners, positive area and a corner set not seen before.
-  // A face's sorted corners and its place among the kept, packed into two words (ids are not
-  // negative, so the words compare as the tuples do).
-  struct Corners {
-    std::uint64_t first_two, third_and_place;
-    bool operator<(const Corners& o) const {
-      return first_two != o.first_two ? first_two < o.first_two
-                                      : third_and_place < o.third_and_place;
-    }
-  };
-  std::vector<Corners> keys;
+  std::vector<std::array<int, 3>> corners;
   std::vector<int> kept;
-  keys.reserve(std::size_t(in.F.rows()));
+  corners.reserve(std::size_t(in.F.rows()));
   for (Eigen::Index f = 0; f < in.F.rows(); ++f) {
     poll_interrupt(std::size_t(f), stop);
     int a = map[in.F(f, 0)], b = map[in.F(f, 1)], c = map[in.F(f, 2)];
@@ -154,18 +193,11 @@ Mesh clean_mesh(const Mesh& in, CleanReport* report, const StopRequested& stop, 
     }
     std::array<int, 3> key{a, b, c};
     std::sort(key.begin(), key.end());
-    keys.push_back({std::uint64_t(key[0]) << 32 | std::uint32_t(key[1]),
-                    std::uint64_t(key[2]) << 32 | std::uint32_t(kept.size())});
+    corners.push_back(key);
     kept.push_back(int(f));
   }
-  polled_sort(keys.begin(), keys.end(), std::less<>(), stop);
-  std::vector<char> duplicate(kept.size(), 0);
-  for (std::size_t k = 1; k < keys.size(); ++k) {
-    poll_interrupt(k, stop);
-    if (keys[k].first_two == keys[k - 1].first_two &&
-        keys[k].third_and_place >> 32 == keys[k - 1].third_and_place >> 32)
-      duplicate[std::uint32_t(keys[k].third_and_place)] = 1, ++r.dropped_duplicate;
-  }
+  const std::vector<char> duplicate = repeated_faces(corners, std::size_t(in.V.rows()), stop);
+  r.dropped_duplicate = std::size_t(std::count(duplicate.begin(), duplicate.end(), 1));
   check_interrupt(stop);
 
   // Compact: new vertex ids in order of first use by a kept face's original index.

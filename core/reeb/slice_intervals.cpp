@@ -82,13 +82,8 @@ SlicedSurface slice_intervals(const Mesh& mesh, const std::vector<double>& mu_in
     s.first_interval[f] = interval_of(lo, intervals);
     s.piece_begin[f + 1] = s.piece_begin[f] + interval_of(hi, intervals) - s.first_interval[f] + 1;
   }
-  // Grown in steps, polling: the pieces of millions of triangles take a second to zero.
-  const std::size_t pieces = std::size_t(s.piece_begin[m]);
-  s.pieces.reserve(pieces);
-  while (s.pieces.size() < pieces) {
-    check_interrupt(stop);
-    s.pieces.resize(std::min(pieces, s.pieces.size() + (std::size_t(1) << 16)));
-  }
+  // Appended in order below, each piece once: none is zeroed first and then written again.
+  s.pieces.reserve(std::size_t(s.piece_begin[m]));
   std::vector<Corner> triangle(3), poly, scratch;
   for (Eigen::Index f = 0; f < m; ++f) {
     if ((f & 4095) == 0) check_interrupt(stop);
@@ -100,7 +95,7 @@ SlicedSurface slice_intervals(const Mesh& mesh, const std::vector<double>& mu_in
       poly = triangle;
       if (k > k0) clip(poly, scratch, double(k) / intervals, +1.0, 1);
       if (k < k1) clip(poly, scratch, double(k + 1) / intervals, -1.0, 2);
-      Piece& piece = s.pieces[std::size_t(s.piece_begin[f] + k - k0)];
+      Piece& piece = s.pieces.emplace_back();  // at piece_begin[f] + k - k0
       piece.triangle = int(f);
       piece.interval = k;
       if (poly.size() >= 3) measure(piece, poly);

@@ -1,8 +1,11 @@
 // Cleaning's edge table: the one mesh_edges builds for the cleaned mesh, turned faces included.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <initializer_list>
 #include <utility>
+#include <vector>
 
 #include "mesh/clean_mesh.hpp"
 #include "mesh/mesh_edges.hpp"
@@ -57,4 +60,39 @@ TEST(CleanMeshEdges, FollowWeldsAndDroppedFaces) {
   const Mesh clean = clean_mesh(m, &report, {}, &edges);
   EXPECT_EQ(report.dropped_duplicate + report.dropped_degenerate, 2u);
   expect_same_edges(edges, mesh_edges(clean.F));
+}
+
+// Repeats of a face in any corner order are dropped and the first copy is the one kept, both
+// where a vertex is the smallest corner of a few faces and at the centre of a fan of 64 faces
+// (its faces sorted rather than searched pairwise).
+TEST(CleanMeshDuplicates, KeepTheFirstCopyOnFansLargeAndSmall) {
+  Mesh m;
+  const int spokes = 64;
+  m.V.resize(spokes + 1, 3);
+  m.V.row(0) << 0, 0, 0;  // the centre, smallest corner of every face
+  for (int k = 0; k < spokes; ++k)
+    m.V.row(k + 1) << std::cos(2 * M_PI * k / spokes), std::sin(2 * M_PI * k / spokes), 0;
+  for (int small : {0, 1}) {
+    Mesh fan = m;
+    std::vector<std::array<int, 3>> faces;
+    // Without the centre (small = 1) the faces form a strip of the ring's neighbours: vertex k
+    // is then the smallest corner of one or two faces.
+    for (int k = 0; k < spokes - 1; ++k)
+      faces.push_back(small ? std::array<int, 3>{k + 1, k + 2, (k + 2) % spokes + 1}
+                            : std::array<int, 3>{0, k + 1, k + 2});
+    const std::size_t unique = faces.size();
+    // Repeats, each after its original, corners rotated or reversed.
+    const std::array<int, 3> a = faces[5], b = faces[40];
+    faces.push_back({a[1], a[2], a[0]});
+    faces.push_back({b[2], b[1], b[0]});
+    faces.push_back({a[2], a[0], a[1]});
+    fan.F.resize(Eigen::Index(faces.size()), 3);
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      for (int c = 0; c < 3; ++c) fan.F(Eigen::Index(f), c) = faces[f][std::size_t(c)];
+    CleanReport report;
+    const Mesh clean = clean_mesh(fan, &report);
+    EXPECT_EQ(report.dropped_duplicate, 3u) << "small " << small;
+    ASSERT_EQ(clean.F.rows(), Eigen::Index(unique)) << "small " << small;
+    EXPECT_EQ(report.dropped_degenerate, 0u);
+  }
 }
