@@ -80,21 +80,21 @@ std::vector<char> repeated_faces(const std::vector<std::array<int, 3>>& corners,
     return std::uint64_t(std::uint32_t(c[1])) << 32 | std::uint32_t(c[2]);
   };
   std::vector<std::pair<std::uint64_t, int>> large;
+  // Indices, not pointers: with no face kept, order.data() may be null.
   for (std::size_t v = 0; v < vertices; ++v) {
     poll_interrupt(v, stop);
-    const int* first = order.data() + start[v];
-    const int* last = order.data() + start[v + 1];
+    const auto first = std::size_t(start[v]), last = std::size_t(start[v + 1]);
     if (last - first <= 32) {
-      for (const int* i = first + 1; i < last; ++i)
-        for (const int* j = first; j < i; ++j)
-          if (pair_of(*j) == pair_of(*i)) {
-            repeated[std::size_t(*i)] = 1;
+      for (std::size_t i = first + 1; i < last; ++i)
+        for (std::size_t j = first; j < i; ++j)
+          if (pair_of(order[j]) == pair_of(order[i])) {
+            repeated[std::size_t(order[i])] = 1;
             break;
           }
       continue;
     }
     large.clear();
-    for (const int* i = first; i < last; ++i) large.emplace_back(pair_of(*i), *i);
+    for (std::size_t i = first; i < last; ++i) large.emplace_back(pair_of(order[i]), order[i]);
     polled_sort(large.begin(), large.end(), std::less<>(), stop);
     for (std::size_t k = 1; k < large.size(); ++k)
       if (large[k].first == large[k - 1].first) repeated[std::size_t(large[k].second)] = 1;
