@@ -11,7 +11,7 @@ as bench/per_class_report.sh writes them), then the held-out set is scored. Each
 comes from `argtool eval --matrix` with the other two weighed 0, and each model's proxy and
 wide-open flags (which decide graph_on_proxy and whether the spectrum counts) from `argtool info
 --json`: the mix of p = 1 reproduces `argtool eval`'s held-out scores to the digit. Scores as
-argtool eval does (ties by index). Exits 0 with a message when the shared data is absent.
+argtool eval does (profile_mix.scores). Exits 0 with a message when the shared data is absent.
 """
 import argparse
 import concurrent.futures
@@ -23,15 +23,13 @@ import os
 import subprocess
 import sys
 
+from profile_mix import read_matrix, scores
+
 SETS = ["shrec07", "shrec11", "psb_soups"]
 MUSEUM = ["Vase", "Bust", "Cup", "Hand", "hand", "Mug", "Bottle", "HumanHead"]
 POWERS = [0, 0.5, 1]
 SPECTRUM = [0.25, 0.5, 1, 2]
 PANORAMA = [0.5, 1, 2]
-
-
-def read_matrix(path):
-    return [[float(x) for x in line.split()] for line in open(path) if line.strip()]
 
 
 def flags_of(argtool, path):
@@ -66,33 +64,6 @@ def mix(d, w, p):
             else:
                 out[i][j] = ((tg * g**p + wp * pa**p + ts * s**p) / tot) ** (1 / p)
     return out
-
-
-def scores(classes, sim):
-    n = len(classes)
-    size = {c: classes.count(c) for c in set(classes)}
-    nn = ft = dcg = ap = 0.0
-    per = {}
-    for q in range(n):
-        order = sorted((sim[q][j], j) for j in range(n) if j != q)
-        rel = [classes[j] == classes[q] for _, j in order]
-        k = size[classes[q]] - 1
-        if k == 0:
-            continue
-        nn += rel[0]
-        f = sum(rel[:k]) / k
-        ft += f
-        per.setdefault(classes[q], []).append(f)
-        gain = lambda i: 1.0 if i == 0 else 1 / math.log2(i + 1)
-        dcg += sum(gain(i) for i, r in enumerate(rel) if r) / sum(gain(i) for i in range(k))
-        hits, a = 0, 0.0
-        for i, r in enumerate(rel):
-            if r:
-                hits += 1
-                a += hits / (i + 1)
-        ap += a / k
-    return {"nn": nn / n, "ft": ft / n, "dcg": dcg / n, "map": ap / n,
-            "per": {c: sum(v) / len(v) for c, v in per.items()}}
 
 
 def main():
@@ -144,15 +115,15 @@ def main():
             w = dict(fold[held])
             w["spectrum"] = str(float(w["spectrum"]) * xs)
             w["panorama"] = str(float(w["panorama"]) * xp)
-            m = sum(scores(data[s]["classes"], mix(data[s], w, p))["map"] for s in train) / 2
+            m = sum(scores(mix(data[s], w, p), data[s]["classes"])[4] for s in train) / 2
             if best is None or m > best[0] + 1e-9:
                 best = (m, p, xs, xp, w)
         _, p, xs, xp, w = best
-        before = scores(data[held]["classes"], mix(data[held], fold[held], 1))
-        after = scores(data[held]["classes"], mix(data[held], w, p))
-        fmt = lambda r: " / ".join(f"{r[k]:.3f}" for k in ("nn", "ft", "dcg", "map"))
-        museum = ", ".join(f"{c} {before['per'][c]:.3f} -> {after['per'][c]:.3f}"
-                           for c in MUSEUM if c in after["per"])
+        before = scores(mix(data[held], fold[held], 1), data[held]["classes"])
+        after = scores(mix(data[held], w, p), data[held]["classes"])
+        fmt = lambda r: " / ".join(f"{r[k]:.3f}" for k in (0, 1, 2, 4))
+        museum = ", ".join(f"{c} {before[3][c]:.3f} -> {after[3][c]:.3f}"
+                           for c in MUSEUM if c in after[3])
         print(f"| {held} | {p}, {xs}, {xp} | {fmt(before)} | {fmt(after)} | {museum} |",
               flush=True)
     return 0

@@ -30,10 +30,10 @@ def read_labels(path):
 
 
 def scores(d, labels):
-    """NN, FT, DCG and FT per class, as core/eval/retrieval_metrics.cpp computes them."""
+    """NN, FT, DCG, FT per class and mAP, as core/eval/retrieval_metrics.cpp computes them."""
     n = len(labels)
     size = {c: labels.count(c) for c in set(labels)}
-    nn = ft = dcg = 0.0
+    nn = ft = dcg = ap = 0.0
     counted = 0
     per_class = {}
     for q in range(n):
@@ -53,8 +53,13 @@ def scores(d, labels):
         per_class[c][-1] = first
         ideal = 1 + sum(1 / math.log2(k) for k in range(2, relevant + 1))
         dcg += sum((1.0 if r == 1 else 1 / math.log2(r)) for r, h in enumerate(hits, 1) if h) / ideal
+        found = 0
+        for r, h in enumerate(hits, 1):
+            if h:
+                found += 1
+                ap += found / r / relevant
     return (nn / counted, ft / counted, dcg / counted,
-            {c: sum(v) / len(v) for c, v in per_class.items()})
+            {c: sum(v) / len(v) for c, v in per_class.items()}, ap / counted)
 
 
 def median_off_diagonal(matrices):
@@ -88,7 +93,7 @@ def main(argv):
               + ", ".join(f"{w}: {statistics.mean(t[1] for t in table[w]):.3f}" for w in GRID)
               + f" -> w = {best}")
         for w in sorted({0.0, best}):
-            nn, ft, dcg, per = scores(mixed(a, p, sa, sp, w), labels)
+            nn, ft, dcg, per, _ = scores(mixed(a, p, sa, sp, w), labels)
             museum = " ".join(f"{c} {per[c]:.3f}" for c in MUSEUM if c in per)
             print(f"  w = {w:<4}  NN {nn:.3f}  FT {ft:.3f}  DCG {dcg:.3f}  {museum}")
 
