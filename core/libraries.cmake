@@ -27,7 +27,7 @@ set(ARG_METHOD_SOURCES
     io/read_ply.cpp io/read_stl.cpp io/read_stl_ascii.cpp io/soup_importer.cpp
     io/soup_to_mesh.cpp io/text_scan.cpp io/texture_sampling.cpp io/tinygltf_impl.cpp
     io/triangulate_polygon.cpp io/write_mesh.cpp
-    mu/dijkstra.cpp mu/geodesic_integral.cpp mu/mu_function.cpp mu/surface_graph.cpp
+    mu/dijkstra.cpp mu/geodesic_integral.cpp mu/lane_steps.cpp mu/mu_function.cpp mu/surface_graph.cpp
     reeb/reeb_levels.cpp reeb/slice_intervals.cpp
     graph/arg_graph.cpp graph/comparable.cpp graph/compact_nodes.cpp graph/node_bound.cpp
     graph/panorama_codes.cpp graph/quantise.cpp graph/serialize.cpp

@@ -6,6 +6,7 @@
 #include "common/parallel_for.hpp"
 #include "mesh/surface_area.hpp"
 #include "mu/dijkstra.hpp"
+#include "mu/lane_steps.hpp"
 #include "mu/mu_function.hpp"
 #include "mu/surface_graph.hpp"
 
@@ -37,6 +38,36 @@ std::vector<int> spread_base_points(const Vertices& V, int count, const StopRequ
   return chosen;
 }
 
+// Sweep orders for shortest_steps_lanes: the distance from the first base point (the rows'
+// layout), then the projections on the four diagonals of the pose's axes. A path that runs
+// against one order runs with another, so fewer sweeps reach the fixpoint than with the
+// distance's order alone (docs/BENCHMARKS.md, "mu in lanes").
+std::vector<std::vector<std::uint32_t>> sweep_keys(const Mesh& mesh, const SurfaceGraph& graph,
+                                                   const std::vector<std::uint32_t>& distance) {
+  const int n = graph.nodes();
+  std::vector<std::vector<std::uint32_t>> keys{distance};
+  const Eigen::Vector3d diagonals[4] = {{1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {-1, 1, 1}};
+  std::vector<double> along(static_cast<std::size_t>(n));
+  for (const Eigen::Vector3d& d : diagonals) {
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (int v = 0; v < n; ++v) {
+      const Eigen::Vector3d p = v < graph.mesh_vertices
+                                    ? Eigen::Vector3d(mesh.V.row(v).transpose())
+                                    : graph.steiner[std::size_t(v - graph.mesh_vertices)];
+      along[std::size_t(v)] = p.dot(d);
+      low = std::min(low, along[std::size_t(v)]);
+      high = std::max(high, along[std::size_t(v)]);
+    }
+    // Whole steps of a 2^24th of the range: an order only needs to be about right.
+    const double scale = high > low ? double(1 << 24) / (high - low) : 0.0;
+    std::vector<std::uint32_t> key(static_cast<std::size_t>(n));
+    for (int v = 0; v < n; ++v)
+      key[std::size_t(v)] = std::uint32_t((along[std::size_t(v)] - low) * scale);
+    keys.push_back(std::move(key));
+  }
+  return keys;
+}
+
 // Typical edge length of a mesh of the same area made of about `faces` equilateral triangles.
 double target_edge(double area, double faces) {
   return std::sqrt(4.0 * area / (std::sqrt(3.0) * faces));
@@ -63,28 +94,50 @@ std::vector<double> geodesic_integral(const Mesh& mesh, const MeshEdges& edges, 
     if (nearest[v] >= 0) weight[nearest[v]] += varea[v];
 
   std::vector<double> mu(std::size_t(nv), 0.0);
-  const int workers = std::max(1, std::min(threads, int(base.size())));
-  // Blocks of base points run in parallel; their distances are added in base-point order, so
-  // the sum (and so the ARG bytes) does not depend on the number of threads. With workers, a
-  // block gives each four runs, so that a thread, started anew for each block, outlives the
-  // cost of starting it (a run on a copy's graph takes a fraction of a millisecond).
-  const int block = workers == 1 ? 1 : 4 * workers;
-  std::vector<BucketScratch> scratch(static_cast<std::size_t>(block));
-  for (auto& s : scratch) prepare_buckets(graph, s);
-  for (std::size_t start = 0; start < base.size(); start += std::size_t(block)) {
-    const int here = int(std::min<std::size_t>(std::size_t(block), base.size() - start));
-    parallel_for(std::size_t(here), workers,
-                 [&](std::size_t k) { shortest_steps(graph, base[start + k], scratch[k], stop); });
-    check_interrupt(stop);
-    // Each distance rounded to a float as shortest_paths_quantised gives it, so mu's bytes are
-    // those of the float distances it was first written with.
-    for (int k = 0; k < here; ++k) {
-      const double s = weight[start + std::size_t(k)];
-      const BucketScratch& run = scratch[std::size_t(k)];
-      for (int v = 0; v < nv; ++v)
-        if (run.dist[std::size_t(v)] != kUnreached)
-          mu[v] += s * double(run.distance(std::size_t(v)));
+  if (base.empty()) return mu;
+  BucketScratch first;
+  prepare_buckets(graph, first);
+  const double unit = first.unit;
+  // Each distance rounded to a float as shortest_paths_quantised gives it, and the runs added
+  // in base-point order whatever computed them, so that mu's bytes (and the ARG's) do not
+  // depend on the thread count or on the lanes.
+  auto add = [&](std::size_t k, auto&& units) {
+    const double s = weight[k];
+    for (int v = 0; v < nv; ++v) {
+      const std::uint32_t d = units(v);
+      if (d != kUnreached) mu[std::size_t(v)] += s * double(float(d * unit));
     }
+  };
+  shortest_steps(graph, base[0], first, stop);
+  add(0, [&](int v) { return first.dist[std::size_t(v)]; });
+  const LaneGraph lanes = lane_graph(graph, first, sweep_keys(mesh, graph, first.dist), stop);
+  check_interrupt(stop);
+  const std::size_t blocks = (base.size() - 1 + kLanes - 1) / kLanes;
+  const int workers = std::max(1, std::min<int>(threads, int(blocks)));
+  if (lanes.fits) {
+    // The other base points kLanes at a time, `workers` blocks in parallel.
+    std::vector<LaneRows> rows(static_cast<std::size_t>(workers));
+    for (std::size_t start = 0; start < blocks; start += std::size_t(workers)) {
+      const std::size_t here = std::min<std::size_t>(std::size_t(workers), blocks - start);
+      parallel_for(here, workers, [&](std::size_t w) {
+        const std::size_t from = 1 + (start + w) * kLanes;
+        const int count = int(std::min<std::size_t>(kLanes, base.size() - from));
+        shortest_steps_lanes(lanes, base.data() + from, count, rows[w], stop);
+      });
+      check_interrupt(stop);
+      for (std::size_t w = 0; w < here; ++w) {
+        const std::size_t from = 1 + (start + w) * kLanes;
+        const int count = int(std::min<std::size_t>(kLanes, base.size() - from));
+        for (int l = 0; l < count; ++l)
+          add(from + std::size_t(l), [&](int v) { return lane_distance(lanes, rows[w], v, l); });
+      }
+    }
+    return mu;
+  }
+  // A graph whose distances might not fit a lane: one bucket queue per base point.
+  for (std::size_t k = 1; k < base.size(); ++k) {
+    shortest_steps(graph, base[k], first, stop);
+    add(k, [&](int v) { return first.dist[std::size_t(v)]; });
   }
   return mu;
 }

@@ -92,6 +92,7 @@ SurfaceGraph surface_graph(const Mesh& mesh, const MeshEdges& E, double max_edge
     g.target[cursor[a]] = b, g.length[cursor[a]++] = len;
     g.target[cursor[b]] = a, g.length[cursor[b]++] = len;
   }
+  g.steiner = std::move(points);
   return g;
 }
 

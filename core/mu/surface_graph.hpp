@@ -15,6 +15,7 @@ struct SurfaceGraph {
   std::vector<int> offset;  // size nodes + 1
   std::vector<int> target;
   std::vector<float> length;
+  std::vector<Eigen::Vector3d> steiner;  // positions of nodes mesh_vertices onwards
 
   int nodes() const { return int(offset.size()) - 1; }
 };
