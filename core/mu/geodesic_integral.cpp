@@ -27,11 +27,12 @@ std::vector<int> spread_base_points(const Vertices& V, int count, const StopRequ
   while (int(chosen.size()) < count) {
     check_interrupt(stop);
     chosen.push_back(next);
-    int far = 0;
-    for (int v = 0; v < n; ++v) {
-      gap[v] = std::min(gap[v], (V.row(v) - V.row(next)).squaredNorm());
-      if (gap[v] > gap[far]) far = v;
-    }
+    // Two passes, the first free of the second's dependence from one vertex to the next so
+    // that it vectorises; the farthest is the first vertex of the largest gap, as before.
+    const Eigen::RowVector3d p = V.row(next);
+    for (int v = 0; v < n; ++v) gap[v] = std::min(gap[v], (V.row(v) - p).squaredNorm());
+    const double largest = *std::max_element(gap.begin(), gap.end());
+    const int far = int(std::find(gap.begin(), gap.end(), largest) - gap.begin());
     if (gap[far] == 0) break;
     next = far;
   }
