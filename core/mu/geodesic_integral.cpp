@@ -69,12 +69,11 @@ std::vector<std::vector<std::uint32_t>> sweep_keys(const Mesh& mesh, const Surfa
   return keys;
 }
 
-// Typical edge length of a mesh of the same area made of about `faces` equilateral triangles.
-double target_edge(double area, double faces) {
-  return std::sqrt(4.0 * area / (std::sqrt(3.0) * faces));
-}
-
 }  // namespace
+
+double geodesic_graph_max_edge(double area) {
+  return 2.0 * std::sqrt(4.0 * area / (std::sqrt(3.0) * 4000.0));
+}
 
 std::vector<double> geodesic_integral(const Mesh& mesh, const MeshEdges& edges, int base_points,
                                       int threads, const StopRequested& stop) {
@@ -83,7 +82,7 @@ std::vector<double> geodesic_integral(const Mesh& mesh, const MeshEdges& edges, 
   check_interrupt(stop);
   double total_area = 0;
   for (double a : varea) total_area += a;
-  SurfaceGraph graph = surface_graph(mesh, edges, 2.0 * target_edge(total_area, 4000.0), stop);
+  SurfaceGraph graph = surface_graph(mesh, edges, geodesic_graph_max_edge(total_area), stop);
   check_interrupt(stop);
 
   std::vector<int> base = spread_base_points(mesh.V, base_points, stop);
@@ -116,19 +115,23 @@ std::vector<double> geodesic_integral(const Mesh& mesh, const MeshEdges& edges, 
   const std::size_t blocks = (base.size() - 1 + kLanes - 1) / kLanes;
   const int workers = std::max(1, std::min<int>(threads, int(blocks)));
   if (lanes.fits) {
-    // The other base points kLanes at a time, `workers` blocks in parallel.
+    // The other base points kLanes at a time, `workers` blocks in parallel. Block b: its first
+    // base point and how many.
+    auto block = [&](std::size_t b) {
+      const std::size_t from = 1 + b * kLanes;
+      return std::pair<std::size_t, int>(from,
+                                         int(std::min<std::size_t>(kLanes, base.size() - from)));
+    };
     std::vector<LaneRows> rows(static_cast<std::size_t>(workers));
     for (std::size_t start = 0; start < blocks; start += std::size_t(workers)) {
       const std::size_t here = std::min<std::size_t>(std::size_t(workers), blocks - start);
       parallel_for(here, workers, [&](std::size_t w) {
-        const std::size_t from = 1 + (start + w) * kLanes;
-        const int count = int(std::min<std::size_t>(kLanes, base.size() - from));
+        const auto [from, count] = block(start + w);
         shortest_steps_lanes(lanes, base.data() + from, count, rows[w], stop);
       });
       check_interrupt(stop);
       for (std::size_t w = 0; w < here; ++w) {
-        const std::size_t from = 1 + (start + w) * kLanes;
-        const int count = int(std::min<std::size_t>(kLanes, base.size() - from));
+        const auto [from, count] = block(start + w);
         for (int l = 0; l < count; ++l)
           add(from + std::size_t(l), [&](int v) { return lane_distance(lanes, rows[w], v, l); });
       }

@@ -17,6 +17,10 @@ namespace arg {
 std::vector<double> geodesic_integral(const Mesh& mesh, const MeshEdges& edges, int base_points,
                                       int threads = 1, const StopRequested& stop = {});
 
+// The longest graph edge geodesic_integral leaves without Steiner points on a surface of this
+// area: twice the edge of an equilateral mesh of the same area and 4000 triangles.
+double geodesic_graph_max_edge(double area);
+
 // mu_N in [0, 1] of the chosen kind on a pose-normalised mesh (height = x, the first principal
 // axis; centroid = distance to the origin, the centre of mass).
 std::vector<double> normalised_mu(const Mesh& mesh, const MeshEdges& edges,

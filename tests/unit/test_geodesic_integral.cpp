@@ -18,10 +18,9 @@ using namespace arg;
 
 namespace {
 
-// The refinement geodesic_integral asks for: twice the edge of a mesh of the same area made of
-// 4000 equilateral triangles (geodesic_integral.cpp).
+// The refinement geodesic_integral gives a surface of m's area.
 double integral_max_edge(const Mesh& m) {
-  return 2.0 * std::sqrt(4.0 * test::surface_area(m) / (std::sqrt(3.0) * 4000.0));
+  return geodesic_graph_max_edge(test::surface_area(m));
 }
 
 // max_edge = edge length x this gives an edge surface_graph's most Steiner points (8).

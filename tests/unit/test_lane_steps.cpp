@@ -18,8 +18,9 @@ using namespace arg;
 
 namespace {
 
+// The refinement geodesic_integral gives a surface of m's area.
 double integral_max_edge(const Mesh& m) {
-  return 2.0 * std::sqrt(4.0 * test::surface_area(m) / (std::sqrt(3.0) * 4000.0));
+  return geodesic_graph_max_edge(test::surface_area(m));
 }
 
 // Keys that order nodes by a coordinate, by a hash (an order unrelated to the surface) and by
