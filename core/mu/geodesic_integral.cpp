@@ -122,9 +122,12 @@ std::vector<double> geodesic_integral(const Mesh& mesh, const MeshEdges& edges, 
       return std::pair<std::size_t, int>(from,
                                          int(std::min<std::size_t>(kLanes, base.size() - from)));
     };
-    std::vector<LaneRows> rows(static_cast<std::size_t>(workers));
-    for (std::size_t start = 0; start < blocks; start += std::size_t(workers)) {
-      const std::size_t here = std::min<std::size_t>(std::size_t(workers), blocks - start);
+    // With workers, a round gives each about four blocks, so that a thread, started anew for
+    // each round, outlives the cost of starting it.
+    const std::size_t round = workers == 1 ? 1 : 4 * std::size_t(workers);
+    std::vector<LaneRows> rows(round);
+    for (std::size_t start = 0; start < blocks; start += round) {
+      const std::size_t here = std::min<std::size_t>(round, blocks - start);
       parallel_for(here, workers, [&](std::size_t w) {
         const auto [from, count] = block(start + w);
         shortest_steps_lanes(lanes, base.data() + from, count, rows[w], stop);
